@@ -1,0 +1,26 @@
+#pragma once
+// A shoot is one annual segment of a branch axis: the unit that flushes, carries foliage (a leaf ball
+// at its tip while it is alive and growing), thickens, dies and falls.
+#include <glm/vec3.hpp>
+
+namespace heliostand {
+
+struct Shoot {
+  glm::dvec3 base{0.0};     // m, stand coordinates (x east, y north, z up)
+  glm::dvec3 tip{0.0};      // m
+  double base_radius_m = 0; // wood radius at base and tip (eq. 2 for the stem, eq. 11 for branches)
+  double tip_radius_m = 0;
+  int parent = -1;          // index of the parent shoot in the tree's shoot list; -1 for the stem base
+  int axis = 0;             // index of the branch axis (0 = stem) the shoot belongs to
+  int order = 0;            // 0 stem, 1 first-order branch, 2 second-order, ...
+  int year_formed = 0;      // tree age in the year it flushed
+  bool alive = true;        // dead shoots persist until they fall (eq. 13)
+};
+
+// The foliage of one living shoot (seed 000): a sphere centred at the shoot tip.
+struct LeafBall {
+  glm::dvec3 centre{0.0};   // m
+  double radius = 0;        // m
+};
+
+}  // namespace heliostand

@@ -1,0 +1,63 @@
+#pragma once
+// Species parameters of the seed-001 conifer model (Ohsaki et al.), Todomatsu (Abies sachalinensis)
+// defaults. Every number with an equation tag is the seed's example value; the others are our choices,
+// documented in docs/model.md. Angles in degrees (as the seed gives them), lengths in metres.
+#include <string>
+
+namespace heliostand {
+
+struct SpeciesParameters {
+  std::string name = "todomatsu";
+
+  // eq. 1  height = A (1 - exp(-k t))^p with p = 1/(1-m) (Chapman–Richards; see MODEL.md §2 ambiguity).
+  double site_asymptote_m = 28.0;  // A, site class 1, site index 2.8
+  double height_k = 0.0348;        // k
+  double height_m = 0.3639;        // m
+
+  // eq. 2  stem diameter (cm) at height h = a2 (H - h)^b2, inside / below the live crown (Hakodate co-dominants).
+  double stem_a_in_crown = 2.245;
+  double stem_b_in_crown = 0.951;
+  double stem_a_below_crown = 3.336;
+  double stem_b_below_crown = 0.771;
+
+  // eq. 3  first-order branches per whorl = a3 x + b3 (heavy-snow provenance).
+  double crown_shape_ratio = 0.38;  // x
+  double whorl_a3 = 20.40;
+  double whorl_b3 = -3.188;
+
+  // eqs. 4-6  branch angle from the stem axis.
+  double initial_branch_angle_deg = 60.0;  // d0
+  double final_branch_angle_deg = 90.0;    // d1
+  double lifespan_years = 100.0;           // individual lifespan in eq. 5
+  double annual_droop_deg = 0.5;
+
+  // eqs. 8-10  elongation.
+  double elongation_alpha = 0.9;            // α, first order
+  double initial_crown_angle_deg = 20.0;
+  double crown_angle_beta = 0.18;           // β
+
+  // eq. 11  branch diameter (cm) = a11 (length from tip, cm)^b11.
+  double branch_a11 = 0.0595;
+  double branch_b11 = 0.717;
+
+  // eqs. 12-13  growth stop and dead-branch loss (the seed gives no values: ours, docs/model.md).
+  double growth_stop_years_first_order = 18.0;  // first-order branch lifespan
+  double activity = -5.0;                       // added per order (eq. 12); smaller = weaker tree
+  double dead_branch_attached_years = 10.0;     // eq. 13 denominator
+
+  // Lower orders and irregularity (seed 001 §3.2 text; values ours).
+  double second_order_elongation_ratio = 0.45;  // 2nd-order initial elongation / parent's this-year elongation
+  double second_order_branch_angle_deg = 50.0;
+  double min_parent_length_m = 0.05;            // branches whose parent is shorter do not grow
+  double first_order_upward_offset_deg = 5.0;   // anti-gravity offset of first-order tips
+  double second_order_jitter_deg = 10.0;        // random up/down jitter of 2nd-order growth
+  int max_order = 3;
+
+  // Foliage: a leaf ball sits at every living shoot tip (seed 000); radius in units of the shoot length
+  // (Table 1: R = 2), bounded so that tiny or huge shoots still give sensible balls.
+  double leaf_ball_radius_ratio = 2.0;
+  double leaf_ball_min_radius_m = 0.05;
+  double leaf_ball_max_radius_m = 0.6;
+};
+
+}  // namespace heliostand

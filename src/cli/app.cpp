@@ -1,0 +1,15 @@
+#include "cli/app.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace heliostand::cli {
+
+int run(int argc, char** argv) {
+  CLI::App app{"heliostand: a forest stand simulator, tree by tree and branch by branch"};
+  app.set_version_flag("--version", HELIOSTAND_VERSION);
+  app.require_subcommand(1);
+  CLI11_PARSE(app, argc, argv);
+  return 0;
+}
+
+}  // namespace heliostand::cli
