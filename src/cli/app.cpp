@@ -1,15 +1,54 @@
 #include "cli/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "cli/commands.hpp"
 
 namespace heliostand::cli {
+namespace {
+
+// Logs go to stderr, so stdout stays clean for machine-readable output (bench JSON, check summary).
+void set_up_logging(int verbosity) {
+  auto logger = spdlog::stderr_color_mt("heliostand");
+  logger->set_pattern("%^%l%$: %v");
+  logger->set_level(verbosity < 0 ? spdlog::level::warn
+                    : verbosity == 0 ? spdlog::level::info
+                                     : spdlog::level::debug);
+  spdlog::set_default_logger(logger);
+}
+
+std::string command_line;
+
+}  // namespace
+
+const std::string& invoked_command_line() { return command_line; }
 
 int run(int argc, char** argv) {
-  CLI::App app{"heliostand: a forest stand simulator, tree by tree and branch by branch"};
-  app.set_version_flag("--version", HELIOSTAND_VERSION);
+  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
+  CLI::App app{"heliostand: grows a surveyed forest stand tree by tree and branch by branch"};
+  app.set_version_flag("--version", std::string("heliostand ") + HELIOSTAND_VERSION);
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  int verbose = 0;
+  bool quiet = false;
+  app.add_flag("-v,--verbose", verbose, "More log output (debug)");
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+
+  int status = 0;
+  add_check_command(app, status);
+  add_grow_command(app, status);
+  add_devices_command(app, status);
+  add_bench_command(app, status);
+
+  app.parse_complete_callback([&] { set_up_logging(quiet ? -1 : verbose); });
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // usage errors are bad input
+  }
+  return status;
 }
 
 }  // namespace heliostand::cli

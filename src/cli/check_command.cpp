@@ -1,0 +1,44 @@
+// heliostand check SCENARIO: read and validate the scenario and its survey, write nothing.
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include "cli/commands.hpp"
+#include "scenario/scenario.hpp"
+#include "stand/thinning.hpp"
+
+namespace heliostand::cli {
+namespace {
+
+void print_summary(const Scenario& scenario) {
+  double basal_area = 0;
+  for (const auto& tree : scenario.survey.trees) basal_area += basal_area_m2(tree.dbh_cm);
+  const double area = scenario.plot_area_ha();
+  fmt::print("scenario   {}\n", scenario.file.string());
+  fmt::print("survey     {} ({} trees)\n", scenario.survey.file.string(), scenario.survey.trees.size());
+  fmt::print("plot       {:.4f} ha, {:.0f} stems/ha, basal area {:.2f} m2/ha\n", area,
+             static_cast<double>(scenario.survey.trees.size()) / area, basal_area / area);
+  fmt::print("run        age {} -> {} ({} years), seed {}, output every {} years\n",
+             scenario.stand.age_at_survey_years, scenario.final_age_years(), scenario.run.years,
+             scenario.run.seed, scenario.run.output_interval_years);
+  for (const auto& event : scenario.thinning)
+    fmt::print("thinning   age {}: {} ({})\n", event.age_years, event.reason,
+               thinning_method_name(event.method));
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, int& status) {
+  auto* command = app.add_subcommand("check", "Validate a scenario and its survey; write nothing");
+  auto path = std::make_shared<std::string>();
+  command->add_option("scenario", *path, "Scenario TOML file")->required();
+  command->callback([path, &status] {
+    status = report_errors([&] {
+      const Scenario scenario = load_scenario(*path);
+      for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+      print_summary(scenario);
+      return 0;
+    });
+  });
+}
+
+}  // namespace heliostand::cli

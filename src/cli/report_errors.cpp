@@ -1,0 +1,24 @@
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.hpp"
+#include "io/input_error.hpp"
+
+namespace heliostand::cli {
+
+int report_errors(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    for (const auto& problem : e.problems())
+      fmt::print(stderr, "error: {}\n", problem.format(e.field_kind()));
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace heliostand::cli

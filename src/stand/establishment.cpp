@@ -1,0 +1,61 @@
+#include "stand/establishment.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include <spdlog/spdlog.h>
+
+#include "stand/calibration.hpp"
+#include "stand/parallel_for.hpp"
+
+namespace heliostand {
+namespace {
+
+SurveyTarget target_of(const SurveyRecord& record) {
+  SurveyTarget target;
+  target.age_years = static_cast<int>(std::lround(record.age_years));
+  target.height_m = record.height_m;
+  // Imputed crown values are allometric guesses, not observations: fit only what was surveyed.
+  if (!record.imputed.crown_radius) target.crown_radius_m = record.crown_radius_m;
+  if (!record.imputed.crown_base) target.crown_base_m = record.crown_base_m;
+  return target;
+}
+
+}  // namespace
+
+std::vector<StandTree> establish_stand(const Scenario& scenario, EstablishmentReport& report) {
+  const auto& records = scenario.survey.trees;
+  std::vector<std::optional<StandTree>> grown(records.size());
+  std::vector<CalibrationResult> fits(records.size());
+
+  parallel_for(records.size(), [&](std::size_t i) {
+    const SurveyRecord& record = records[i];
+    const SpeciesParameters& species = scenario.species_of(record);
+    const int id = static_cast<int>(i);
+    fits[i] = calibrate_tree(species, target_of(record), scenario.run.seed, id);
+    ConiferTree tree = grow_calibrated_tree(species, fits[i].calibration, target_of(record).age_years,
+                                            {record.x_m, record.y_m, 0.0}, scenario.run.seed, id);
+    grown[i].emplace(StandTree{id, record.id, record.species, std::move(tree)});
+  });
+
+  report = {};
+  std::vector<StandTree> trees;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& fit = fits[i];
+    if (fit.status == CalibrationStatus::fitted) {
+      ++report.fitted;
+    } else if (fit.usable()) {
+      ++report.crown_base_off;
+      spdlog::debug("tree '{}' ({}:{}): {}", records[i].id, scenario.survey.file.string(), records[i].line,
+                    fit.message);
+    } else {
+      ++report.unusable;
+      spdlog::warn("tree '{}' ({}:{}): {}", records[i].id, scenario.survey.file.string(), records[i].line,
+                   fit.message);
+    }
+    trees.push_back(std::move(*grown[i]));
+  }
+  return trees;
+}
+
+}  // namespace heliostand

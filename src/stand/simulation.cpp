@@ -1,0 +1,130 @@
+#include "stand/simulation.hpp"
+
+#include <chrono>
+#include <map>
+
+#include <spdlog/spdlog.h>
+
+#include "io/stand_output.hpp"
+#include "light/make_light_solver.hpp"
+#include "stand/establishment.hpp"
+#include "stand/progress.hpp"
+#include "stand/snapshot.hpp"
+#include "stand/stand.hpp"
+
+namespace heliostand {
+namespace {
+
+// Wall time per stage of the yearly loop, for run.json.
+class StageClock {
+ public:
+  template <typename Work>
+  auto time(const std::string& stage, Work work) {
+    const auto start = std::chrono::steady_clock::now();
+    struct Stop {
+      StageClock& clock;
+      const std::string& stage;
+      std::chrono::steady_clock::time_point start;
+      ~Stop() { clock.add(stage, std::chrono::steady_clock::now() - start); }
+    } stop{*this, stage, start};
+    return work();
+  }
+  double seconds(const std::string& stage) const {
+    for (const auto& [name, value] : stages_) if (name == stage) return value;
+    return 0;
+  }
+  const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
+
+ private:
+  void add(const std::string& stage, std::chrono::steady_clock::duration elapsed) {
+    const double seconds = std::chrono::duration<double>(elapsed).count();
+    for (auto& [name, value] : stages_)
+      if (name == stage) { value += seconds; return; }
+    stages_.emplace_back(stage, seconds);
+  }
+  std::vector<std::pair<std::string, double>> stages_;
+};
+
+std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
+  std::vector<ScheduledThinning> events;
+  for (const auto& event : scenario.thinning)
+    events.push_back({event.age_years,
+                      ThinningRule{event.method, event.ids, event.target_stems_per_ha,
+                                   event.target_basal_area_m2_per_ha},
+                      event.reason});
+  return events;
+}
+
+LightParameters light_for(const Scenario& scenario) {
+  LightParameters light = scenario.light;
+  light.plot_x_min = scenario.stand.plot.x_min;
+  light.plot_y_min = scenario.stand.plot.y_min;
+  light.plot_x_max = scenario.stand.plot.x_max;
+  light.plot_y_max = scenario.stand.plot.y_max;
+  return light;
+}
+
+bool is_output_year(const Scenario& scenario, int years_done) {
+  return years_done == scenario.run.years || years_done % scenario.run.output_interval_years == 0;
+}
+
+}  // namespace
+
+SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  RunManifest manifest;
+  manifest.started_utc = utc_now_iso8601();
+  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
+
+  const std::string device = options.device.empty() ? scenario.run.device.text() : options.device;
+  auto solver = make_light_solver(device, light_for(scenario));
+  spdlog::info("light solver: {}", solver->name());
+
+  StageClock clock;
+  EstablishmentReport report;
+  auto trees = clock.time("establishment", [&] { return establish_stand(scenario, report); });
+  spdlog::info("established {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
+               trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
+               report.unusable);
+  Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
+              schedule(scenario));
+
+  ProgressLine progress(scenario.run.years, options.show_progress);
+  SnapshotTracker snapshots;
+  for (int year = 0; year <= scenario.run.years; ++year) {
+    if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
+    const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
+    spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
+    const auto removals = stand.thin();
+    output.record_events(removals);
+    if (is_output_year(scenario, year))
+      clock.time("output", [&] { output.write_year(snapshots.take(stand, year)); return 0; });
+    progress.update(year);
+  }
+  progress.finish();
+
+  SimulationSummary summary;
+  summary.first_stand_age = scenario.stand.age_at_survey_years;
+  summary.last_stand_age = stand.stand_age();
+  for (const auto& tree : stand.trees()) {
+    summary.trees_alive += tree.status == TreeStatus::alive;
+    summary.trees_removed += tree.status == TreeStatus::removed;
+    summary.trees_dead += tree.status == TreeStatus::dead;
+  }
+  summary.light_seconds = clock.seconds("light");
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  manifest.command_line = options.command_line;
+  manifest.scenario_path = scenario.file.string();
+  manifest.seed = scenario.run.seed;
+  manifest.device = solver->name();
+  manifest.first_stand_age = summary.first_stand_age;
+  manifest.last_stand_age = summary.last_stand_age;
+  manifest.stage_seconds = clock.stages();
+  manifest.wall_seconds = summary.wall_seconds;
+  manifest.finished_utc = utc_now_iso8601();
+  output.finish(std::move(manifest));
+  return summary;
+}
+
+}  // namespace heliostand

@@ -1,0 +1,47 @@
+#pragma once
+// The stand manager: every tree of the plantation, grown together one year at a time.
+// One simulated year (DESIGN.md): grow → light → (respond) → thin → metrics; data flows one way.
+#include <string>
+#include <vector>
+
+#include "io/tree_event.hpp"
+#include "light/light_solver.hpp"
+#include "stand/stand_tree.hpp"
+#include "stand/thinning.hpp"
+
+namespace heliostand {
+
+struct ScheduledThinning {
+  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age
+  ThinningRule rule;
+  std::string reason;     // label in events.csv, e.g. "first thinning"
+};
+
+class Stand {
+ public:
+  Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
+        std::vector<ScheduledThinning> thinning, bool protect_habitat_trees = true);
+
+  int stand_age() const { return stand_age_; }
+  double plot_area_ha() const { return plot_area_ha_; }
+  const std::vector<StandTree>& trees() const { return trees_; }
+
+  // Every living tree grows one year; the stand ages by one.
+  void grow_year();
+  // The light field of the whole stand: every living tree's leaf balls shade every other's.
+  // Returns the number of leaf balls lit.
+  std::size_t illuminate(LightSolver& solver);
+  // Thinnings scheduled for the current stand age. Returns the removals, in removal order.
+  std::vector<TreeEvent> thin();
+
+ private:
+  std::vector<TreeEvent> apply(const ScheduledThinning& event);
+
+  double plot_area_ha_;
+  int stand_age_;
+  std::vector<StandTree> trees_;
+  std::vector<ScheduledThinning> thinning_;
+  bool protect_habitat_trees_;
+};
+
+}  // namespace heliostand
