@@ -1,12 +1,13 @@
 #pragma once
 // One conifer grown by the seed-001 rules (Ohsaki et al.): a stem growing by the Chapman–Richards
 // height curve, whorls of first-order branches, opposite pairs of lower-order branches, growth stop by
-// order, dead branches that persist and then fall tip-first.
+// order, dead branches that persist and then fall tip-first. docs/model.md "Seed 001" explains each rule.
 #include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "architecture/branch_axis.hpp"
 #include "architecture/shoot.hpp"
 #include "architecture/species.hpp"
 
@@ -26,6 +27,7 @@ class ConiferTree {
 
   // Advance one year: age + 1, stem and branch elongation, new whorl, growth stop, death, fall.
   void grow_year();
+  void grow_to_age(int age);  // grow_year() until age() == age
 
   int age() const { return age_; }
   double height_m() const;
@@ -35,18 +37,47 @@ class ConiferTree {
   double stem_volume_m3() const;    // stem volume by integrating eq. 2 along the stem
 
   const std::vector<Shoot>& shoots() const { return shoots_; }
+  const std::vector<BranchAxis>& axes() const { return axes_; }
   std::vector<LeafBall> leaf_balls() const;  // one per living shoot tip that carries foliage
+  bool carries_foliage(const Shoot& shoot) const;
+  std::size_t living_shoot_count() const;
   glm::dvec3 stem_base() const { return stem_base_; }
   int id() const { return tree_id_; }
+  const SpeciesParameters& species() const { return species_; }
+  const TreeCalibration& calibration() const { return calibration_; }
+
+  // Hooks for the light response (DESIGN.md step 3), used after grow_year():
+  std::vector<int> new_shoot_indices() const;  // the shoots that flushed this year
+  // Turn a shoot to a new direction about its base, keeping its length; everything it carries moves with it.
+  void bend_shoot(int shoot_index, glm::dvec3 direction);
+  // Remove a shoot with everything it carries (the rest of its axis and all laterals on them).
+  void remove_shoot(int shoot_index);
 
  private:
+  double height_at(int age) const;
+  int add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip);
+  int add_axis(int order, int parent_axis, double initial_elongation_m, double azimuth_rad);
+  void grow_stem();
+  void grow_branches();
+  void grow_axis(int axis_index);
+  void sprout_laterals(int parent_axis_index, int bearing_shoot);
+  void sprout_whorl();
+  void kill_axis(int axis_index);
+  void droop_first_order_branches();
+  void drop_dead_branches();
+  void remove_flagged(std::vector<char> removed);
+  void update_radii();
+  double axis_length_m(const BranchAxis& axis) const;
+
   SpeciesParameters species_;
   TreeCalibration calibration_;
   glm::dvec3 stem_base_;
   std::uint64_t seed_;
   int tree_id_;
   int age_ = 0;
+  int next_axis_id_ = 0;
   std::vector<Shoot> shoots_;
+  std::vector<BranchAxis> axes_;  // axes_[0] is the stem
 };
 
 }  // namespace heliostand

@@ -3,6 +3,7 @@
 // defaults. Every number with an equation tag is the seed's example value; the others are our choices,
 // documented in docs/model.md. Angles in degrees (as the seed gives them), lengths in metres.
 #include <string>
+#include <vector>
 
 namespace heliostand {
 
@@ -30,11 +31,13 @@ struct SpeciesParameters {
   double final_branch_angle_deg = 90.0;    // d1
   double lifespan_years = 100.0;           // individual lifespan in eq. 5
   double annual_droop_deg = 0.5;
+  double whorl_azimuth_jitter = 0.3;       // ours: azimuth jitter as a fraction of the even spacing 360°/N
 
   // eqs. 8-10  elongation.
   double elongation_alpha = 0.9;            // α, first order
   double initial_crown_angle_deg = 20.0;
   double crown_angle_beta = 0.18;           // β
+  double lower_order_elongation_alpha = 0.9;  // ours: the seed gives α only for first order; same value
 
   // eq. 11  branch diameter (cm) = a11 (length from tip, cm)^b11.
   double branch_a11 = 0.0595;
@@ -42,22 +45,33 @@ struct SpeciesParameters {
 
   // eqs. 12-13  growth stop and dead-branch loss (the seed gives no values: ours, docs/model.md).
   double growth_stop_years_first_order = 18.0;  // first-order branch lifespan
-  double activity = -5.0;                       // added per order (eq. 12); smaller = weaker tree
+  double activity = -8.0;                       // added per order (eq. 12); smaller = weaker tree
   double dead_branch_attached_years = 10.0;     // eq. 13 denominator
 
   // Lower orders and irregularity (seed 001 §3.2 text; values ours).
   double second_order_elongation_ratio = 0.45;  // 2nd-order initial elongation / parent's this-year elongation
   double second_order_branch_angle_deg = 50.0;
-  double min_parent_length_m = 0.05;            // branches whose parent is shorter do not grow
+  double min_parent_length_m = 0.06;            // branches whose parent is shorter do not grow
   double first_order_upward_offset_deg = 5.0;   // anti-gravity offset of first-order tips
   double second_order_jitter_deg = 10.0;        // random up/down jitter of 2nd-order growth
   int max_order = 3;
+  // Third-order occurrence by the parent (2nd-order) shoot's elongation (seed 001 §3.2): the probability
+  // of each bud of the opposite pair flushing. Thresholds in cm, from the highest down.
+  struct OccurrenceStep {
+    double min_parent_elongation_cm;
+    double probability;
+  };
+  std::vector<OccurrenceStep> third_order_occurrence = {
+      {6.5, 1.0}, {5.5, 0.975}, {5.0, 0.95}, {4.0, 0.72}, {3.5, 0.50}, {3.0, 0.295}, {2.0, 0.10}};
 
   // Foliage: a leaf ball sits at every living shoot tip (seed 000); radius in units of the shoot length
   // (Table 1: R = 2), bounded so that tiny or huge shoots still give sensible balls.
   double leaf_ball_radius_ratio = 2.0;
   double leaf_ball_min_radius_m = 0.05;
   double leaf_ball_max_radius_m = 0.6;
+  // ours: a shoot keeps its foliage (and its leaf ball) for this many years, counting the year it flushed
+  // (Todomatsu keeps needles several years; 5 keeps the ball count of a 35-year tree in the thousands).
+  int foliage_years = 5;
 };
 
 }  // namespace heliostand

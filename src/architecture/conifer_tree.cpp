@@ -1,0 +1,406 @@
+#include "architecture/conifer_tree.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "architecture/branch_angle.hpp"
+#include "architecture/branch_diameter.hpp"
+#include "architecture/elongation.hpp"
+#include "architecture/growth_stop.hpp"
+#include "architecture/height_curve.hpp"
+#include "architecture/lower_order_branching.hpp"
+#include "architecture/stem_taper.hpp"
+#include "architecture/whorl.hpp"
+#include "geometry/angles.hpp"
+#include "rng/random_stream.hpp"
+
+namespace heliostand {
+
+namespace {
+
+// Random-stream tags: each (tree, year, organ kind, axis) draws from its own stream.
+enum Organ : std::uint64_t { kWhorl = 1, kLateralPair = 2 };
+
+const glm::dvec3 up{0.0, 0.0, 1.0};
+
+// Unit vector at `angle` from the vertical, leaning towards `azimuth` (x east = 0, counter-clockwise).
+glm::dvec3 direction_from(double angle_from_vertical, double azimuth) {
+  return {std::sin(angle_from_vertical) * std::cos(azimuth), std::sin(angle_from_vertical) * std::sin(azimuth),
+          std::cos(angle_from_vertical)};
+}
+
+double angle_from_vertical(glm::dvec3 v) {
+  return std::acos(std::clamp(v.z / glm::length(v), -1.0, 1.0));
+}
+
+// Rodrigues' rotation of v about the unit axis k by `angle` (right-handed).
+glm::dvec3 rotate(glm::dvec3 v, glm::dvec3 k, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+}
+
+double shoot_length(const Shoot& shoot) { return glm::length(shoot.tip - shoot.base); }
+
+// Tilt a direction up (positive angle) or down in its own vertical plane.
+glm::dvec3 tilt_up(glm::dvec3 direction, double angle) {
+  const glm::dvec3 towards_up = up - glm::dot(up, direction) * direction;
+  const double norm = glm::length(towards_up);
+  if (norm < 1e-9) return direction;  // vertical: no plane to tilt in
+  return std::cos(angle) * direction + std::sin(angle) * (towards_up / norm);
+}
+
+}  // namespace
+
+ConiferTree::ConiferTree(const SpeciesParameters& species, const TreeCalibration& calibration,
+                         glm::dvec3 stem_base, std::uint64_t seed, int tree_id)
+    : species_(species), calibration_(calibration), stem_base_(stem_base), seed_(seed), tree_id_(tree_id) {
+  add_axis(0, -1, 0.0, 0.0);  // the stem
+}
+
+double ConiferTree::height_at(int age) const {
+  return tree_height_m(species_, calibration_.site_asymptote_m, age);
+}
+
+int ConiferTree::add_axis(int order, int parent_axis, double initial_elongation_m, double azimuth_rad) {
+  const int index = static_cast<int>(axes_.size());
+  BranchAxis axis;
+  axis.id = next_axis_id_++;
+  axis.order = order;
+  axis.parent_axis = parent_axis;
+  axis.first_order_root = order == 0 ? -1 : order == 1 ? index : axes_[parent_axis].first_order_root;
+  axis.year_formed = age_;
+  axis.initial_elongation_m = initial_elongation_m;
+  axis.azimuth_rad = azimuth_rad;
+  axes_.push_back(axis);
+  return index;
+}
+
+int ConiferTree::add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip) {
+  const int index = static_cast<int>(shoots_.size());
+  Shoot shoot;
+  shoot.base = base;
+  shoot.tip = tip;
+  shoot.parent = parent_shoot;
+  shoot.axis = axis;
+  shoot.order = axes_[axis].order;
+  shoot.year_formed = age_;
+  shoots_.push_back(shoot);
+  axes_[axis].shoots.push_back(index);
+  return index;
+}
+
+void ConiferTree::grow_year() {
+  ++age_;
+  const std::size_t axes_before_this_year = axes_.size();
+  grow_stem();
+  // Parents come before their laterals in the axis list, so a parent's death is known when its laterals
+  // are visited; laterals that sprout during this loop are appended and not grown twice.
+  for (std::size_t i = 1; i < axes_before_this_year; ++i) grow_axis(static_cast<int>(i));
+  sprout_whorl();
+  droop_first_order_branches();
+  drop_dead_branches();
+  update_radii();
+}
+
+void ConiferTree::grow_to_age(int age) {
+  while (age_ < age) grow_year();
+}
+
+void ConiferTree::grow_stem() {
+  const auto& stem = axes_[0].shoots;
+  const int leader = stem.empty() ? -1 : stem.back();
+  add_shoot(0, leader, stem_base_ + up * height_at(age_ - 1), stem_base_ + up * height_at(age_));
+}
+
+void ConiferTree::grow_axis(int i) {
+  if (!axes_[i].alive || axes_[i].shoots.empty()) return;
+  const int parent = axes_[i].parent_axis;
+  const int order = axes_[i].order;
+  const int years_since_emergence = age_ - axes_[i].year_formed;
+  const double stop_years = growth_stop_years(species_, calibration_.growth_stop_years_first_order, order);
+  // A lateral dies with the branch that carries it; every branch dies when its growth stops (eq. 12).
+  if ((parent > 0 && !axes_[parent].alive) || !still_growing(years_since_emergence, stop_years)) {
+    kill_axis(i);
+    return;
+  }
+  const double alpha = order == 1 ? species_.elongation_alpha : species_.lower_order_elongation_alpha;
+  const double length = annual_elongation_m(axes_[i].initial_elongation_m, years_since_emergence + 1, alpha);
+  const int last = axes_[i].shoots.back();
+  const Shoot& previous = shoots_[last];
+  // First order: this year's shoot follows eq. 4's angle, lifted by the anti-gravity offset (the droop step
+  // then turns the whole branch so its chord sits exactly on eq. 4). Lower orders grow straight on.
+  const glm::dvec3 direction =
+      order == 1 ? direction_from(radians(first_order_branch_angle_deg(species_, years_since_emergence) -
+                                          species_.first_order_upward_offset_deg),
+                                  axes_[i].azimuth_rad)
+                 : glm::normalize(previous.tip - previous.base);
+  if (length <= 0.0) return;
+  const glm::dvec3 tip = previous.tip;
+  add_shoot(i, last, tip, tip + direction * length);
+  sprout_laterals(i, last);
+}
+
+// The opposite pair of order n+1 flushes where this year's shoot starts: at the tip of last year's shoot,
+// from the buds it set. Its initial elongation is linear in that bearing shoot's elongation.
+void ConiferTree::sprout_laterals(int parent_axis, int bearing_shoot) {
+  const int order = axes_[parent_axis].order + 1;
+  if (order > species_.max_order) return;
+  if (!still_growing(0.0, growth_stop_years(species_, calibration_.growth_stop_years_first_order, order))) return;
+  const Shoot bearing = shoots_[bearing_shoot];
+  const double parent_elongation = shoot_length(bearing);
+  const double probability = lateral_occurrence_probability(species_, order, parent_elongation);
+  const double initial = lower_order_initial_elongation_m(species_, parent_elongation);
+  RandomStream random(seed_, {static_cast<std::uint64_t>(tree_id_), static_cast<std::uint64_t>(age_), kLateralPair,
+                              static_cast<std::uint64_t>(axes_[parent_axis].id)});
+  const glm::dvec3 along = glm::normalize(bearing.tip - bearing.base);
+  glm::dvec3 side = glm::cross(along, up);
+  side = glm::length(side) < 1e-9 ? glm::dvec3{1.0, 0.0, 0.0} : glm::normalize(side);
+  const double spread = radians(species_.second_order_branch_angle_deg);
+  for (double sign : {1.0, -1.0}) {
+    const bool flushes = random.chance(probability);  // both draws always taken: streams stay aligned
+    const double jitter = radians(species_.second_order_jitter_deg) * random.symmetric();
+    if (!flushes || initial <= 0.0) continue;
+    const glm::dvec3 direction = tilt_up(std::cos(spread) * along + std::sin(spread) * sign * side, jitter);
+    const int axis = add_axis(order, parent_axis, initial, 0.0);
+    add_shoot(axis, bearing_shoot, bearing.tip, bearing.tip + glm::normalize(direction) * initial);
+  }
+}
+
+// This year's whorl flushes at the tip of last year's leader; its branches' tips start on the crown cone (eq. 9).
+void ConiferTree::sprout_whorl() {
+  const auto& stem = axes_[0].shoots;
+  if (stem.size() < 2 || !still_growing(0.0, calibration_.growth_stop_years_first_order)) return;
+  const int node_shoot = stem[stem.size() - 2];
+  if (shoots_[node_shoot].year_formed != age_ - 1) return;
+  const double height_growth = height_at(age_) - height_at(age_ - 1);
+  const double initial =
+      calibration_.elongation_scale * first_order_initial_elongation_m(species_, height_growth, age_);
+  if (initial <= 0.0) return;
+  RandomStream random(seed_, {static_cast<std::uint64_t>(tree_id_), static_cast<std::uint64_t>(age_), kWhorl});
+  const int count = draw_whorl_size(species_, random);
+  const glm::dvec3 node = shoots_[node_shoot].tip;
+  const double lifted = radians(species_.initial_branch_angle_deg - species_.first_order_upward_offset_deg);
+  for (double azimuth : whorl_azimuths(count, species_.whorl_azimuth_jitter, random)) {
+    const int axis = add_axis(1, 0, initial, azimuth);
+    add_shoot(axis, node_shoot, node, node + direction_from(lifted, azimuth) * initial);
+  }
+}
+
+void ConiferTree::kill_axis(int i) {
+  BranchAxis& axis = axes_[i];
+  axis.alive = false;
+  axis.year_stopped = age_;
+  axis.length_at_death_m = axis_length_m(axis);
+  for (int s : axis.shoots) shoots_[s].alive = false;
+}
+
+double ConiferTree::axis_length_m(const BranchAxis& axis) const {
+  double total = 0.0;
+  for (int s : axis.shoots) total += shoot_length(shoots_[s]);
+  return total;
+}
+
+// Eqs. 4-6: every living first-order branch is turned about its insertion on the stem, in its own vertical
+// plane, so that its chord (insertion → tip) makes exactly the eq.-4 angle with the stem axis. Everything it
+// carries turns with it. The anti-gravity lift of each new shoot then shows as an upturned tip.
+void ConiferTree::droop_first_order_branches() {
+  std::vector<double> turn(axes_.size(), 0.0);
+  std::vector<glm::dvec3> pivot(axes_.size()), hinge(axes_.size());
+  for (std::size_t i = 1; i < axes_.size(); ++i) {
+    const BranchAxis& axis = axes_[i];
+    if (axis.order != 1 || !axis.alive || axis.shoots.empty()) continue;
+    pivot[i] = shoots_[axis.shoots.front()].base;
+    const glm::dvec3 chord = shoots_[axis.shoots.back()].tip - pivot[i];
+    const double horizontal = std::hypot(chord.x, chord.y);
+    const double azimuth = horizontal > 1e-12 ? std::atan2(chord.y, chord.x) : axis.azimuth_rad;
+    hinge[i] = {-std::sin(azimuth), std::cos(azimuth), 0.0};  // turning about it by +θ lowers the branch
+    const double target =
+        std::clamp(radians(first_order_branch_angle_deg(species_, age_ - axis.year_formed)), 0.0, pi);
+    turn[i] = target - angle_from_vertical(chord);
+  }
+  for (Shoot& shoot : shoots_) {
+    const int root = axes_[shoot.axis].first_order_root;
+    if (root < 0 || turn[root] == 0.0) continue;
+    shoot.base = pivot[root] + rotate(shoot.base - pivot[root], hinge[root], turn[root]);
+    shoot.tip = pivot[root] + rotate(shoot.tip - pivot[root], hinge[root], turn[root]);
+  }
+}
+
+// Eq. 13: a dead branch loses (years since stop / attached years) of its length, tip first. A shoot falls
+// once it lies wholly in the lost tip fraction, so the last stub falls when the fraction reaches 1.
+void ConiferTree::drop_dead_branches() {
+  std::vector<char> fallen(shoots_.size(), 0);
+  bool any = false;
+  for (std::size_t i = 1; i < axes_.size(); ++i) {
+    const BranchAxis& axis = axes_[i];
+    if (axis.alive) continue;
+    const double lost = dead_branch_loss_fraction(species_, age_ - axis.year_stopped);
+    if (lost <= 0.0) continue;
+    const double kept_length = (1.0 - lost) * axis.length_at_death_m;
+    double distance_from_base = 0.0;
+    for (int s : axis.shoots) {
+      if (distance_from_base >= kept_length - 1e-12) {
+        fallen[s] = 1;  // everything distal hangs on this shoot and falls with it
+        any = true;
+        break;
+      }
+      distance_from_base += shoot_length(shoots_[s]);
+    }
+  }
+  if (any) remove_flagged(std::move(fallen));
+}
+
+// Removes the flagged shoots and everything they carry, then renumbers shoots and axes.
+void ConiferTree::remove_flagged(std::vector<char> removed) {
+  // A shoot's parent always precedes it in the list, so one forward pass reaches every descendant.
+  for (std::size_t i = 0; i < shoots_.size(); ++i)
+    if (shoots_[i].parent >= 0 && removed[shoots_[i].parent]) removed[i] = 1;
+
+  std::vector<int> new_shoot_index(shoots_.size(), -1);
+  std::vector<Shoot> kept;
+  kept.reserve(shoots_.size());
+  for (std::size_t i = 0; i < shoots_.size(); ++i) {
+    if (removed[i]) continue;
+    new_shoot_index[i] = static_cast<int>(kept.size());
+    kept.push_back(shoots_[i]);
+  }
+  for (Shoot& shoot : kept)
+    if (shoot.parent >= 0) shoot.parent = new_shoot_index[shoot.parent];
+  shoots_ = std::move(kept);
+
+  for (BranchAxis& axis : axes_) axis.shoots.clear();
+  for (std::size_t i = 0; i < shoots_.size(); ++i) axes_[shoots_[i].axis].shoots.push_back(static_cast<int>(i));
+
+  // Axes left without shoots are gone (the stem stays). Parents precede laterals here too.
+  std::vector<int> new_axis_index(axes_.size(), -1);
+  std::vector<BranchAxis> kept_axes;
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    if (i != 0 && axes_[i].shoots.empty()) continue;
+    new_axis_index[i] = static_cast<int>(kept_axes.size());
+    kept_axes.push_back(std::move(axes_[i]));
+  }
+  for (BranchAxis& axis : kept_axes) {
+    if (axis.parent_axis >= 0) axis.parent_axis = new_axis_index[axis.parent_axis];
+    if (axis.first_order_root >= 0) axis.first_order_root = new_axis_index[axis.first_order_root];
+  }
+  axes_ = std::move(kept_axes);
+  for (Shoot& shoot : shoots_) shoot.axis = new_axis_index[shoot.axis];
+}
+
+// Stem radii by eq. 2 for the current height and crown base; living branch radii by eq. 11 from the length to
+// the branch tip. Dead branches keep the radii they had when they died.
+void ConiferTree::update_radii() {
+  const StemTaper taper{height_m(), crown_base_m()};
+  for (int s : axes_[0].shoots) {
+    Shoot& shoot = shoots_[s];
+    shoot.base_radius_m = 0.005 * taper.diameter_cm(species_, shoot.base.z - stem_base_.z);
+    shoot.tip_radius_m = 0.005 * taper.diameter_cm(species_, shoot.tip.z - stem_base_.z);
+  }
+  for (std::size_t i = 1; i < axes_.size(); ++i) {
+    if (!axes_[i].alive) continue;
+    double from_tip = 0.0;
+    for (auto s = axes_[i].shoots.rbegin(); s != axes_[i].shoots.rend(); ++s) {
+      Shoot& shoot = shoots_[*s];
+      shoot.tip_radius_m = 0.005 * branch_diameter_cm(species_, from_tip);
+      from_tip += shoot_length(shoot);
+      shoot.base_radius_m = 0.005 * branch_diameter_cm(species_, from_tip);
+    }
+  }
+}
+
+double ConiferTree::height_m() const { return height_at(age_); }
+
+double ConiferTree::crown_base_m() const {
+  double lowest = height_m();
+  for (const BranchAxis& axis : axes_)
+    if (axis.order == 1 && axis.alive && !axis.shoots.empty())
+      lowest = std::min(lowest, shoots_[axis.shoots.front()].base.z - stem_base_.z);
+  return lowest;
+}
+
+double ConiferTree::dbh_cm() const { return StemTaper{height_m(), crown_base_m()}.dbh_cm(species_); }
+
+double ConiferTree::stem_volume_m3() const { return StemTaper{height_m(), crown_base_m()}.volume_m3(species_); }
+
+bool ConiferTree::carries_foliage(const Shoot& shoot) const {
+  return shoot.alive && age_ - shoot.year_formed < species_.foliage_years;
+}
+
+std::vector<LeafBall> ConiferTree::leaf_balls() const {
+  std::vector<LeafBall> balls;
+  for (const Shoot& shoot : shoots_) {
+    if (!carries_foliage(shoot)) continue;
+    const double radius = std::clamp(species_.leaf_ball_radius_ratio * shoot_length(shoot),
+                                     species_.leaf_ball_min_radius_m, species_.leaf_ball_max_radius_m);
+    balls.push_back({shoot.tip, radius});
+  }
+  return balls;
+}
+
+// Mean over 8 azimuth sectors (45° each, around the stem) of the farthest horizontal reach of living foliage:
+// leaf-ball centre distance from the stem axis plus the ball radius. An empty sector counts 0.
+double ConiferTree::crown_radius_m() const {
+  std::array<double, 8> reach{};
+  for (const LeafBall& ball : leaf_balls()) {
+    const glm::dvec3 offset = ball.centre - stem_base_;
+    const double distance = std::hypot(offset.x, offset.y);
+    double azimuth = std::atan2(offset.y, offset.x);
+    if (azimuth < 0.0) azimuth += 2.0 * pi;
+    const int sector = std::min(7, static_cast<int>(azimuth / (pi / 4.0)));
+    reach[sector] = std::max(reach[sector], distance + ball.radius);
+  }
+  double sum = 0.0;
+  for (double r : reach) sum += r;
+  return sum / 8.0;
+}
+
+std::size_t ConiferTree::living_shoot_count() const {
+  return static_cast<std::size_t>(std::count_if(shoots_.begin(), shoots_.end(), [](const Shoot& s) { return s.alive; }));
+}
+
+std::vector<int> ConiferTree::new_shoot_indices() const {
+  std::vector<int> indices;
+  for (std::size_t i = 0; i < shoots_.size(); ++i)
+    if (shoots_[i].year_formed == age_) indices.push_back(static_cast<int>(i));
+  return indices;
+}
+
+void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
+  if (shoot_index < 0 || shoot_index >= static_cast<int>(shoots_.size()))
+    throw std::out_of_range("ConiferTree::bend_shoot: no shoot " + std::to_string(shoot_index));
+  const Shoot& bent = shoots_[shoot_index];
+  const glm::dvec3 from = glm::normalize(bent.tip - bent.base);
+  const glm::dvec3 to = glm::normalize(direction);
+  const glm::dvec3 axis = glm::cross(from, to);
+  const double sine = glm::length(axis);
+  const double angle = std::atan2(sine, glm::dot(from, to));
+  if (angle == 0.0) return;
+  // Antiparallel directions have no unique hinge: any axis perpendicular to `from` will do.
+  glm::dvec3 hinge = sine > 1e-12 ? axis / sine : glm::cross(from, glm::dvec3{1.0, 0.0, 0.0});
+  if (glm::length(hinge) < 1e-9) hinge = glm::cross(from, glm::dvec3{0.0, 1.0, 0.0});
+  hinge = glm::normalize(hinge);
+  const glm::dvec3 pivot = bent.base;
+  std::vector<char> moves(shoots_.size(), 0);
+  moves[shoot_index] = 1;
+  for (std::size_t i = shoot_index + 1; i < shoots_.size(); ++i)
+    if (shoots_[i].parent >= 0 && moves[shoots_[i].parent]) moves[i] = 1;
+  for (std::size_t i = 0; i < shoots_.size(); ++i) {
+    if (!moves[i]) continue;
+    if (static_cast<int>(i) != shoot_index) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);
+    shoots_[i].tip = pivot + rotate(shoots_[i].tip - pivot, hinge, angle);
+  }
+}
+
+void ConiferTree::remove_shoot(int shoot_index) {
+  if (shoot_index < 0 || shoot_index >= static_cast<int>(shoots_.size()))
+    throw std::out_of_range("ConiferTree::remove_shoot: no shoot " + std::to_string(shoot_index));
+  std::vector<char> removed(shoots_.size(), 0);
+  removed[shoot_index] = 1;
+  remove_flagged(std::move(removed));
+}
+
+}  // namespace heliostand
