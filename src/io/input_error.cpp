@@ -8,7 +8,7 @@ std::string InputProblem::format(const std::string& field_kind) const {
   std::string where = file;
   if (line > 0) where += fmt::format(":{}", line);
   if (field.empty()) return fmt::format("{}: {}", where, reason);
-  return fmt::format("{}: {} '{}': {}", where, field_kind, field, reason);
+  return fmt::format("{}: {} '{}': {}", where, kind.empty() ? field_kind : kind, field, reason);
 }
 
 namespace {

@@ -13,6 +13,9 @@ struct InputProblem {
   int line = 0;        // 1-based; 0 when the problem is not tied to one line (e.g. unreadable file)
   std::string field;   // column name or TOML key path; empty when not tied to one field
   std::string reason;
+  // Overrides the error's field kind for this problem ("column" in a survey problem merged into a
+  // scenario error whose kind is "key"); empty: use the kind passed to format().
+  std::string kind = {};
 
   // "FILE:LINE: column 'NAME': reason" (or "key 'a.b'" for TOML keys, chosen by `field_kind`).
   std::string format(const std::string& field_kind = "column") const;

@@ -1,0 +1,426 @@
+#include "survey/read_survey.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include "io/input_error.hpp"
+#include "survey/csv_table.hpp"
+#include "survey/strict_number.hpp"
+#include "survey/survey_columns.hpp"
+
+namespace heliostand {
+
+namespace {
+
+constexpr double same_position_tolerance_m = 0.01;
+constexpr std::size_t column_count = 10;  // number of SurveyColumn values
+
+std::string read_whole_file(const std::filesystem::path& file, const std::string& label) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw InputError({{label, 0, "", "cannot read the survey: it is a directory"}});
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw InputError({{label, 0, "", fmt::format("cannot read the survey: {}", std::strerror(errno))}});
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string trimmed(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+  return std::string(text);
+}
+
+// Where each survey column sits in the file, and the name the file gives it (used in messages, so the
+// user sees the header they wrote).
+struct ColumnLayout {
+  std::array<int, column_count> index{};
+  std::array<std::string, column_count> header_name{};
+  std::size_t field_count = 0;
+
+  ColumnLayout() { index.fill(-1); }
+  bool has(SurveyColumn c) const { return index[static_cast<std::size_t>(c)] >= 0; }
+  const std::string& name(SurveyColumn c) const {
+    const auto& written = header_name[static_cast<std::size_t>(c)];
+    return written.empty() ? header_name_fallback(c) : written;
+  }
+  static const std::string& header_name_fallback(SurveyColumn c) {
+    static const auto names = [] {
+      std::array<std::string, column_count> n;
+      for (const auto& info : survey_columns()) n[static_cast<std::size_t>(info.column)] = std::string(info.name);
+      return n;
+    }();
+    return names[static_cast<std::size_t>(c)];
+  }
+};
+
+std::string accepted_names(SurveyColumn column) {
+  const auto& aliases = survey_column_info(column).aliases;
+  return fmt::format("{}", fmt::join(aliases.begin(), aliases.end(), ", "));
+}
+
+ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::vector<InputProblem>& problems,
+                         std::vector<std::string>& warnings) {
+  ColumnLayout layout;
+  layout.field_count = header.fields.size();
+  for (std::size_t i = 0; i < header.fields.size(); ++i) {
+    const std::string written = trimmed(header.fields[i]);
+    const auto column = survey_column_named(written);
+    if (!column) {
+      warnings.push_back(fmt::format("{}: column '{}' is not a survey column; ignored", file, written));
+      continue;
+    }
+    const auto slot = static_cast<std::size_t>(*column);
+    if (layout.index[slot] >= 0) {
+      problems.push_back({file, header.line, written,
+                          fmt::format("names the same column as '{}' (column {})", layout.header_name[slot],
+                                      layout.index[slot] + 1)});
+      continue;
+    }
+    layout.index[slot] = static_cast<int>(i);
+    layout.header_name[slot] = written;
+  }
+  for (SurveyColumn required : {SurveyColumn::x, SurveyColumn::y}) {
+    if (!layout.has(required)) {
+      problems.push_back({file, header.line, std::string(survey_column_info(required).name),
+                          fmt::format("required column missing (accepted names: {})", accepted_names(required))});
+    }
+  }
+  if (!layout.has(SurveyColumn::height) && !layout.has(SurveyColumn::dbh)) {
+    problems.push_back({file, header.line, "height",
+                        fmt::format("neither a height nor a dbh column; one of them is required (accepted names: "
+                                    "{}; {})",
+                                    accepted_names(SurveyColumn::height), accepted_names(SurveyColumn::dbh))});
+  }
+  if (layout.has(SurveyColumn::crown_radius) && layout.has(SurveyColumn::crown_diameter)) {
+    problems.push_back({file, header.line, layout.name(SurveyColumn::crown_diameter),
+                        fmt::format("give either a crown radius ('{}') or a crown diameter column, not both",
+                                    layout.name(SurveyColumn::crown_radius))});
+  }
+  return layout;
+}
+
+// What a row says, before imputation: a number per numeric column when the cell is not empty.
+struct RowValues {
+  std::array<std::optional<double>, column_count> number;
+  std::array<bool, column_count> bad{};  // the cell held something that is not an acceptable value
+  std::string id, species;
+  bool ok = true;
+};
+
+enum class Sign { any, positive, non_negative };
+
+class RowReader {
+ public:
+  RowReader(const ColumnLayout& layout, const std::string& file, std::vector<InputProblem>& problems)
+      : layout_(layout), file_(file), problems_(problems) {}
+
+  RowValues read(const CsvRecord& record) {
+    RowValues row;
+    record_ = &record;
+    row_ = &row;
+    if (layout_.has(SurveyColumn::id)) row.id = cell(SurveyColumn::id);
+    if (layout_.has(SurveyColumn::species)) row.species = cell(SurveyColumn::species);
+    number(SurveyColumn::x, Sign::any, true);
+    number(SurveyColumn::y, Sign::any, true);
+    number(SurveyColumn::height, Sign::positive, false);
+    number(SurveyColumn::dbh, Sign::positive, false);
+    number(SurveyColumn::crown_radius, Sign::positive, false);
+    number(SurveyColumn::crown_diameter, Sign::positive, false);
+    number(SurveyColumn::crown_base, Sign::non_negative, false);
+    number(SurveyColumn::age, Sign::positive, false);
+    return row;
+  }
+
+  void problem(SurveyColumn column, std::string reason) {
+    problems_.push_back({file_, record_->line, layout_.name(column), std::move(reason)});
+    row_->bad[static_cast<std::size_t>(column)] = true;
+    row_->ok = false;
+  }
+
+ private:
+  std::string cell(SurveyColumn column) const {
+    return trimmed(record_->fields[static_cast<std::size_t>(layout_.index[static_cast<std::size_t>(column)])]);
+  }
+
+  void number(SurveyColumn column, Sign sign, bool required) {
+    if (!layout_.has(column)) return;
+    const std::string text = cell(column);
+    if (text.empty()) {
+      if (required) problem(column, "a value is required here (the cell is empty)");
+      return;
+    }
+    const auto value = parse_strict_number(text);
+    if (!value) return problem(column, fmt::format("expected a number, got \"{}\"", text));
+    if (!std::isfinite(*value)) return problem(column, fmt::format("expected a finite number, got \"{}\"", text));
+    if (sign == Sign::positive && *value <= 0)
+      return problem(column, fmt::format("expected a number > 0, got \"{}\"", text));
+    if (sign == Sign::non_negative && *value < 0)
+      return problem(column, fmt::format("expected a number >= 0, got \"{}\"", text));
+    row_->number[static_cast<std::size_t>(column)] = *value;
+  }
+
+  const ColumnLayout& layout_;
+  const std::string& file_;
+  std::vector<InputProblem>& problems_;
+  const CsvRecord* record_ = nullptr;
+  RowValues* row_ = nullptr;
+};
+
+// Counts imputed values per column, to give one warning per column rather than one per tree.
+struct ImputationTally {
+  std::array<int, column_count> missing{};
+  void count(SurveyColumn column) { ++missing[static_cast<std::size_t>(column)]; }
+};
+
+class SurveyBuilder {
+ public:
+  SurveyBuilder(const ColumnLayout& layout, const SurveyReadOptions& options, const std::string& file,
+                std::vector<InputProblem>& problems)
+      : layout_(layout), options_(options), file_(file), problems_(problems) {}
+
+  void add(const CsvRecord& record) {
+    if (record.fields.size() != layout_.field_count) {
+      problems_.push_back({file_, record.line, "",
+                           fmt::format("expected {} fields (as in the header), got {}", layout_.field_count,
+                                       record.fields.size())});
+      return;
+    }
+    RowReader reader(layout_, file_, problems_);
+    RowValues row = reader.read(record);
+    SurveyRecord tree;
+    tree.line = record.line;
+    complete(row, reader, tree);
+    if (row.ok) trees_.push_back(std::move(tree));
+  }
+
+  std::vector<SurveyRecord> take_trees() { return std::move(trees_); }
+
+  std::vector<std::string> warnings(std::size_t records) const {
+    std::vector<std::string> out;
+    auto warn = [&](SurveyColumn column, const std::string& rule) {
+      const int n = tally_.missing[static_cast<std::size_t>(column)];
+      if (n == 0) return;
+      out.push_back(fmt::format("{}: column '{}': {} of {} values missing; {}", file_, layout_.name(column), n,
+                                records, rule));
+    };
+    warn(SurveyColumn::id, "using the line number as id");
+    warn(SurveyColumn::height, "imputed from DBH by seed 001 eq. 2 (below-crown coefficients), inverted");
+    warn(SurveyColumn::dbh, "imputed from height by seed 001 eq. 2 (below-crown coefficients)");
+    warn(SurveyColumn::crown_radius,
+         layout_.has(SurveyColumn::crown_diameter)
+             ? std::string("taken as half the crown diameter, or imputed from DBH where that is missing too")
+             : fmt::format("imputed as {:g} m + {:g} m/cm x DBH", options_.allometry.crown_radius_intercept_m,
+                           options_.allometry.crown_radius_per_dbh_m_per_cm));
+    warn(SurveyColumn::crown_base,
+         fmt::format("imputed as {:g} x height", options_.allometry.crown_base_height_ratio));
+    warn(SurveyColumn::age, options_.stand_age_years
+                                ? fmt::format("using the stand age at the survey, {:g} years", *options_.stand_age_years)
+                                : std::string("no stand age to use"));
+    warn(SurveyColumn::species, fmt::format("using the default species '{}'", options_.default_species));
+    return out;
+  }
+
+ private:
+  using C = SurveyColumn;
+  std::optional<double> value(const RowValues& row, C c) const { return row.number[static_cast<std::size_t>(c)]; }
+
+  const SpeciesParameters& species_of(const std::string& name) const {
+    static const SpeciesParameters todomatsu{};
+    auto it = options_.species.find(name);
+    return it == options_.species.end() ? todomatsu : it->second;
+  }
+
+  // Fills the record from the row, imputing what is missing; every gap that cannot be filled is a problem.
+  void complete(RowValues& row, RowReader& reader, SurveyRecord& tree) {
+    tree.x_m = value(row, C::x).value_or(0);
+    tree.y_m = value(row, C::y).value_or(0);
+    if (row.number[static_cast<std::size_t>(C::x)] && row.number[static_cast<std::size_t>(C::y)] && options_.plot &&
+        !options_.plot->contains(tree.x_m, tree.y_m)) {
+      const auto& p = *options_.plot;
+      if (tree.x_m < p.x_min || tree.x_m > p.x_max)
+        reader.problem(C::x, fmt::format("{:g} is outside the plot (x from {:g} to {:g} m)", tree.x_m, p.x_min, p.x_max));
+      if (tree.y_m < p.y_min || tree.y_m > p.y_max)
+        reader.problem(C::y, fmt::format("{:g} is outside the plot (y from {:g} to {:g} m)", tree.y_m, p.y_min, p.y_max));
+    }
+
+    tree.id = row.id;
+    if (tree.id.empty()) {
+      tree.id = std::to_string(tree.line);
+      tree.imputed.id = true;
+      tally_.count(C::id);
+    }
+    tree.species = row.species;
+    if (tree.species.empty()) {
+      tree.species = options_.default_species;
+      tree.imputed.species = true;
+      tally_.count(C::species);
+    } else if (!options_.species.empty() && !options_.species.count(tree.species)) {
+      std::vector<std::string> known;
+      for (const auto& [name, _] : options_.species) known.push_back(name);
+      reader.problem(C::species, fmt::format("unknown species \"{}\" (the scenario defines: {})", tree.species,
+                                             fmt::join(known, ", ")));
+    }
+    const SpeciesParameters& species = species_of(tree.species);
+
+    complete_height_and_dbh(row, reader, species, tree);
+    complete_crown(row, reader, tree);
+
+    if (auto age = value(row, C::age)) {
+      tree.age_years = *age;
+    } else if (options_.stand_age_years) {
+      tree.age_years = *options_.stand_age_years;
+      tree.imputed.age = true;
+      tally_.count(C::age);
+    } else {
+      reader.problem(C::age, "no age given, and no stand age to impute it from");
+    }
+  }
+
+  void complete_height_and_dbh(RowValues& row, RowReader& reader, const SpeciesParameters& species,
+                               SurveyRecord& tree) {
+    const auto height = value(row, C::height);
+    const auto dbh = value(row, C::dbh);
+    // A bad height or dbh cell is already reported; imputing from the other would only add noise.
+    if (row.bad[static_cast<std::size_t>(C::height)] || row.bad[static_cast<std::size_t>(C::dbh)]) return;
+    if (!height && !dbh) {
+      reader.problem(layout_.has(C::height) ? C::height : C::dbh,
+                     "neither height nor dbh given for this tree (one of them is required)");
+      return;
+    }
+    if (height) {
+      tree.height_m = *height;
+    } else {
+      tree.height_m = height_from_dbh_m(*dbh, species);
+      tree.imputed.height = true;
+      tally_.count(C::height);
+    }
+    if (dbh) {
+      tree.dbh_cm = *dbh;
+    } else if (tree.height_m <= breast_height_m) {
+      reader.problem(layout_.has(C::dbh) ? C::dbh : C::height,
+                     fmt::format("no dbh given, and a tree {:g} m tall is not above breast height ({:g} m) to "
+                                 "impute one",
+                                 tree.height_m, breast_height_m));
+    } else {
+      tree.dbh_cm = dbh_from_height_cm(tree.height_m, species);
+      tree.imputed.dbh = true;
+      tally_.count(C::dbh);
+    }
+  }
+
+  void complete_crown(RowValues& row, RowReader& reader, SurveyRecord& tree) {
+    if (auto radius = value(row, C::crown_radius)) {
+      tree.crown_radius_m = *radius;
+    } else if (auto diameter = value(row, C::crown_diameter)) {
+      tree.crown_radius_m = *diameter / 2;
+    } else {
+      tree.crown_radius_m = crown_radius_from_dbh_m(tree.dbh_cm, options_.allometry);
+      tree.imputed.crown_radius = true;
+      tally_.count(layout_.has(C::crown_diameter) ? C::crown_diameter : C::crown_radius);
+    }
+    if (auto base = value(row, C::crown_base)) {
+      tree.crown_base_m = *base;
+      if (tree.height_m > 0 && *base >= tree.height_m) {
+        reader.problem(C::crown_base, fmt::format("crown base {:g} m is not below the tree height {:g} m", *base,
+                                                  tree.height_m));
+      }
+    } else {
+      tree.crown_base_m = crown_base_from_height_m(tree.height_m, options_.allometry);
+      tree.imputed.crown_base = true;
+      tally_.count(C::crown_base);
+    }
+  }
+
+  const ColumnLayout& layout_;
+  const SurveyReadOptions& options_;
+  const std::string& file_;
+  std::vector<InputProblem>& problems_;
+  std::vector<SurveyRecord> trees_;
+  ImputationTally tally_;
+};
+
+void check_unique_ids(const std::vector<SurveyRecord>& trees, const std::string& file, const std::string& column,
+                      std::vector<InputProblem>& problems) {
+  std::unordered_map<std::string, int> first_line;
+  for (const auto& tree : trees) {
+    auto [it, inserted] = first_line.emplace(tree.id, tree.line);
+    if (!inserted) {
+      problems.push_back({file, tree.line, column,
+                          fmt::format("duplicate id \"{}\" (first used on line {})", tree.id, it->second)});
+    }
+  }
+}
+
+// Two stems cannot share a planting position: a typing slip that would otherwise put two trees in one.
+void check_distinct_positions(const std::vector<SurveyRecord>& trees, const std::string& file,
+                              std::vector<InputProblem>& problems) {
+  std::vector<const SurveyRecord*> by_x;
+  for (const auto& tree : trees) by_x.push_back(&tree);
+  std::sort(by_x.begin(), by_x.end(), [](auto* a, auto* b) { return a->x_m < b->x_m || (a->x_m == b->x_m && a->line < b->line); });
+  std::vector<std::pair<int, int>> clashes;  // (later line, earlier line)
+  for (std::size_t i = 0; i < by_x.size(); ++i) {
+    for (std::size_t j = i + 1; j < by_x.size() && by_x[j]->x_m - by_x[i]->x_m <= same_position_tolerance_m; ++j) {
+      const double distance = std::hypot(by_x[j]->x_m - by_x[i]->x_m, by_x[j]->y_m - by_x[i]->y_m);
+      if (distance <= same_position_tolerance_m) {
+        clashes.emplace_back(std::max(by_x[i]->line, by_x[j]->line), std::min(by_x[i]->line, by_x[j]->line));
+      }
+    }
+  }
+  std::sort(clashes.begin(), clashes.end());
+  for (auto [line, other] : clashes) {
+    problems.push_back({file, line, "x,y",
+                        fmt::format("stands within 1 cm of the tree on line {} (two trees at one position)", other)});
+  }
+}
+
+}  // namespace
+
+Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& options) {
+  const std::string label = file.string();
+  const std::string text = read_whole_file(file, label);
+  CsvTable table = parse_csv(text, label);
+  std::vector<InputProblem> problems = std::move(table.problems);
+  Survey survey;
+  survey.file = file;
+
+  if (table.records.empty()) {
+    problems.push_back({label, 0, "", "the survey is empty (expected a header row and one row per tree)"});
+    throw InputError(std::move(problems));
+  }
+  const ColumnLayout layout = read_header(table.records.front(), label, problems, survey.warnings);
+  if (!problems.empty()) throw InputError(std::move(problems));
+  if (table.records.size() == 1) {
+    problems.push_back({label, table.records.front().line, "", "no tree records after the header"});
+    throw InputError(std::move(problems));
+  }
+
+  SurveyBuilder builder(layout, options, label, problems);
+  for (std::size_t i = 1; i < table.records.size(); ++i) builder.add(table.records[i]);
+  survey.trees = builder.take_trees();
+  const std::string id_column = layout.name(SurveyColumn::id);
+  check_unique_ids(survey.trees, label, id_column, problems);
+  check_distinct_positions(survey.trees, label, problems);
+  if (!problems.empty()) {
+    std::stable_sort(problems.begin(), problems.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+    throw InputError(std::move(problems));
+  }
+  auto warnings = builder.warnings(table.records.size() - 1);
+  survey.warnings.insert(survey.warnings.end(), warnings.begin(), warnings.end());
+  return survey;
+}
+
+}  // namespace heliostand

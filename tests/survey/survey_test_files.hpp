@@ -1,0 +1,35 @@
+#pragma once
+// Writes small survey files for tests into GoogleTest's temporary folder.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/input_error.hpp"
+
+namespace heliostand::testing {
+
+inline std::filesystem::path write_test_file(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "heliostand_inputs";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// The formatted problem lines of an InputError thrown by `action`, or a test failure if none is thrown.
+template <class Action>
+std::vector<std::string> input_problems(Action&& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    std::vector<std::string> lines;
+    for (const auto& p : error.problems()) lines.push_back(p.format(error.field_kind()));
+    return lines;
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return {};
+}
+
+}  // namespace heliostand::testing
