@@ -1,0 +1,69 @@
+#pragma once
+// The run's output folder. Nothing in it is ever half-written under its final name: every file is
+// written under a temporary name beside its final name and renamed into place (rename within one
+// folder is atomic on POSIX), and run.json is written last, so its presence marks a finished run.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace heliostand {
+
+class OutputFolderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Where a file is written before it is renamed to `final_path`: a hidden sibling "dir/.name.tmp".
+std::filesystem::path temporary_sibling(const std::filesystem::path& final_path);
+
+// A file under its temporary name until commit() renames it into place. If never committed (an
+// exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path final_path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  AtomicFile(AtomicFile&& other) noexcept;
+  AtomicFile& operator=(AtomicFile&&) = delete;
+
+  const std::filesystem::path& temporary_path() const { return temporary_; }
+  const std::filesystem::path& final_path() const { return final_; }
+  bool committed() const { return committed_; }
+
+  void commit();   // rename temporary → final (replacing an older final file)
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+class OutputFolder {
+ public:
+  // A hidden file written into the folder as soon as it is taken: it lets a later `force` run
+  // recognise the folder as an earlier heliostand output and clear it — and refuse to clear anything else.
+  static constexpr std::string_view marker_name = ".heliostand-output";
+
+  // Creates `root` (with parents). An existing non-empty folder is refused unless `force`; with
+  // `force` its contents are deleted, but only if it carries the marker of an earlier run.
+  OutputFolder(std::filesystem::path root, bool force);
+
+  const std::filesystem::path& root() const { return root_; }
+  std::filesystem::path path_of(const std::filesystem::path& relative) const { return root_ / relative; }
+
+  // Writes `contents` to root/relative through a temporary and records it as an output.
+  void write_file(const std::filesystem::path& relative, std::string_view contents);
+
+  // Adds a path (relative to root, '/'-separated) to the list of outputs for run.json; once only.
+  void record_output(const std::filesystem::path& relative);
+  const std::vector<std::string>& output_files() const { return outputs_; }
+
+ private:
+  std::filesystem::path root_;
+  std::vector<std::string> outputs_;
+};
+
+}  // namespace heliostand

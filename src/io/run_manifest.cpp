@@ -1,0 +1,38 @@
+#include "io/run_manifest.hpp"
+
+#include <chrono>
+#include <ctime>
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace heliostand {
+
+std::string to_json(const RunManifest& manifest) {
+  nlohmann::ordered_json json;
+  json["format_version"] = RunManifest::format_version;
+  json["heliostand_version"] = manifest.heliostand_version;
+  json["command_line"] = manifest.command_line;
+  json["scenario"] = manifest.scenario_path;
+  json["seed"] = manifest.seed;
+  json["device"] = manifest.device;
+  json["started_utc"] = manifest.started_utc;
+  json["finished_utc"] = manifest.finished_utc;
+  json["first_stand_age"] = manifest.first_stand_age;
+  json["last_stand_age"] = manifest.last_stand_age;
+  json["wall_seconds"] = manifest.wall_seconds;
+  nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+  for (const auto& [stage, seconds] : manifest.stage_seconds) stages[stage] = seconds;
+  json["stage_seconds"] = stages;
+  json["output_files"] = manifest.output_files;
+  // Invalid UTF-8 (e.g. a path in a legacy encoding) is replaced rather than aborting the run at its end.
+  return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
+}
+
+}  // namespace heliostand

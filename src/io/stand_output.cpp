@@ -1,0 +1,69 @@
+#include "io/stand_output.hpp"
+
+#include <fmt/format.h>
+
+#include "io/stand_tables.hpp"
+#include "stand/stand_metrics.hpp"
+
+namespace heliostand {
+
+StandOutput::Table::Table(const std::filesystem::path& final_path)
+    : file(final_path), stream(file.temporary_path(), std::ios::trunc), csv(stream) {
+  if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
+}
+
+StandOutput::StandOutput(const StandOutputOptions& options)
+    : folder_(options.folder, options.force), plot_area_m2_(options.plot_area_m2) {
+  if (!(plot_area_m2_ > 0)) throw std::invalid_argument("stand output: plot area must be > 0 m²");
+  if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
+  stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
+  trees_ = std::make_unique<Table>(folder_.path_of(trees_file));
+  events_ = std::make_unique<Table>(folder_.path_of(events_file));
+  write_stand_table_header(stand_table_->csv);
+  write_trees_header(trees_->csv);
+  write_events_header(events_->csv);
+}
+
+StandOutput::~StandOutput() {
+  if (finished_) return;
+  try {
+    close_tables();
+  } catch (...) {
+    // Already unwinding from a failed run: the temporaries are cleaned up by AtomicFile.
+  }
+}
+
+void StandOutput::record_events(std::span<const TreeEvent> events) {
+  for (const TreeEvent& event : events) write_event_row(events_->csv, event);
+  events_->stream.flush();
+  events_since_last_row_.insert(events_since_last_row_.end(), events.begin(), events.end());
+}
+
+void StandOutput::write_year(const StandSnapshot& snapshot) {
+  write_stand_table_row(stand_table_->csv, stand_table_row(snapshot, plot_area_m2_, events_since_last_row_));
+  events_since_last_row_.clear();
+  write_tree_rows(trees_->csv, snapshot);
+  stand_table_->stream.flush();
+  trees_->stream.flush();
+  if (vtk_) vtk_->write_year(snapshot);
+}
+
+void StandOutput::close_tables() {
+  for (Table* table : {stand_table_.get(), trees_.get(), events_.get()}) {
+    if (table->file.committed()) continue;
+    table->stream.close();
+    if (!table->stream) throw OutputFolderError(fmt::format("cannot write {}", table->file.temporary_path().string()));
+    table->file.commit();
+    folder_.record_output(table->file.final_path().filename());
+  }
+}
+
+void StandOutput::finish(RunManifest manifest) {
+  close_tables();
+  manifest.output_files = folder_.output_files();
+  manifest.output_files.push_back(manifest_file);
+  folder_.write_file(manifest_file, to_json(manifest));
+  finished_ = true;
+}
+
+}  // namespace heliostand

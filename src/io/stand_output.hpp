@@ -1,0 +1,70 @@
+#pragma once
+// Everything a run writes, behind one object the stand manager drives:
+//   StandOutput out({folder, force, plot_area_m2});      // takes the folder (refuses a non-empty one)
+//   each simulated year:  out.record_events(events);      // removals and deaths, every year
+//   each output year:     out.write_year(snapshot);       // VTK year + stand.pvd, stand_table and trees rows
+//   at the end:           out.finish(manifest);           // tables renamed into place, run.json last
+// Tables are streamed to hidden temporaries (".trees.csv.tmp") and renamed at finish(). If the run
+// throws, the destructor still renames them (their rows are complete up to the last written year), but
+// no run.json is written: its absence marks the run as unfinished.
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "io/csv_writer.hpp"
+#include "io/output_folder.hpp"
+#include "io/run_manifest.hpp"
+#include "io/stand_snapshot.hpp"
+#include "io/tree_event.hpp"
+#include "io/vtk_time_series_writer.hpp"
+
+namespace heliostand {
+
+struct StandOutputOptions {
+  std::filesystem::path folder;
+  bool force = false;        // replace an earlier heliostand run in `folder`
+  double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
+  bool write_vtk = true;     // false: tables only (batch forecasts)
+};
+
+class StandOutput {
+ public:
+  static constexpr const char* stand_table_file = "stand_table.csv";
+  static constexpr const char* trees_file = "trees.csv";
+  static constexpr const char* events_file = "events.csv";
+  static constexpr const char* manifest_file = "run.json";
+
+  explicit StandOutput(const StandOutputOptions& options);
+  ~StandOutput();
+  StandOutput(const StandOutput&) = delete;
+  StandOutput& operator=(const StandOutput&) = delete;
+
+  void record_events(std::span<const TreeEvent> events);
+  void write_year(const StandSnapshot& snapshot);
+  // Fills manifest.output_files, renames the tables into place and writes run.json last.
+  void finish(RunManifest manifest);
+
+  OutputFolder& folder() { return folder_; }
+  VtkTimeSeriesWriter* vtk() { return vtk_.get(); }   // to add blocks; null when VTK output is off
+
+ private:
+  struct Table {
+    AtomicFile file;
+    std::ofstream stream;
+    CsvWriter csv;
+    explicit Table(const std::filesystem::path& final_path);
+  };
+
+  void close_tables();
+
+  OutputFolder folder_;
+  double plot_area_m2_;
+  std::unique_ptr<VtkTimeSeriesWriter> vtk_;
+  std::unique_ptr<Table> stand_table_, trees_, events_;
+  std::vector<TreeEvent> events_since_last_row_;
+  bool finished_ = false;
+};
+
+}  // namespace heliostand

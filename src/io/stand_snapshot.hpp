@@ -1,0 +1,45 @@
+#pragma once
+// Everything one output year writes, decoupled from the simulation classes: the stand manager fills a
+// StandSnapshot from its trees, the writers (VTK blocks, CSV tables) read only this.
+//
+// Extending: a later feature (roots, soil grid, trunk or hollow meshes) adds its data here — a field on
+// TreeSnapshot for per-tree geometry, a field on StandSnapshot for stand-wide grids — and registers a
+// block builder (io/vtk_stand_blocks.hpp) that turns it into one named block of the yearly multiblock.
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "architecture/shoot.hpp"
+#include "io/tree_status.hpp"
+
+namespace heliostand {
+
+struct TreeSnapshot {
+  int id = 0;
+  std::string label;                // survey id
+  glm::dvec3 position{0.0};         // m, stem base in stand coordinates
+  TreeStatus status = TreeStatus::alive;
+  double age_years = 0;
+  double height_m = 0;
+  double dbh_cm = 0;
+  double crown_base_m = 0;
+  double crown_radius_m = 0;
+  double volume_m3 = 0;             // stem volume
+  double mean_light = 0;            // mean relative light of the tree's leaf balls (0..1); NaN if unknown
+
+  // Geometry. `shoots` is a view into the tree's own shoot list (copying millions of shoots per output
+  // year would cost more than writing them): it must stay valid while the snapshot is being written.
+  std::span<const Shoot> shoots;
+  std::vector<LeafBall> leaf_balls;
+  std::vector<double> leaf_ball_light;  // one per leaf ball (same order), relative light 0..1; may be empty
+};
+
+struct StandSnapshot {
+  int stand_age = 0;     // years; the time value of this output year in ParaView and the tables
+  int year_index = 0;    // 0 for the first simulated year of the run
+  std::vector<TreeSnapshot> trees;
+};
+
+}  // namespace heliostand

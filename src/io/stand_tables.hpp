@@ -1,0 +1,22 @@
+#pragma once
+// The three CSV tables of a run (columns, units and meaning: docs/outputs.md):
+//   stand_table.csv  one row per output year: stand metrics per hectare, removals and deaths
+//   trees.csv        one row per tree per output year
+//   events.csv       one row per tree removed (thinning) or dead (mortality), every simulated year
+#include "io/csv_writer.hpp"
+#include "io/stand_snapshot.hpp"
+#include "io/tree_event.hpp"
+#include "stand/stand_metrics.hpp"
+
+namespace heliostand {
+
+void write_stand_table_header(CsvWriter& csv);
+void write_stand_table_row(CsvWriter& csv, const StandTableRow& row);
+
+void write_trees_header(CsvWriter& csv);
+void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot);
+
+void write_events_header(CsvWriter& csv);
+void write_event_row(CsvWriter& csv, const TreeEvent& event);
+
+}  // namespace heliostand

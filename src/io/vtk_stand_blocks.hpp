@@ -1,0 +1,45 @@
+#pragma once
+// The blocks of the yearly VTK multiblock. Each block is built from the StandSnapshot by a named
+// builder, so a later feature (roots, soil grid, trunk or hollow meshes) adds a block by adding a
+// builder to the list — the writer does not change. Arrays and units: docs/outputs.md.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <vtkDataObject.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include "io/stand_snapshot.hpp"
+
+namespace heliostand {
+
+using BlockBuilder = std::function<vtkSmartPointer<vtkDataObject>(const StandSnapshot&)>;
+
+struct StandBlock {
+  std::string name;     // block name shown in ParaView (vtkCompositeDataSet::NAME)
+  BlockBuilder build;
+};
+
+// One two-point line per shoot (base → tip). Point data: radius (m, wood radius, for the Tube filter's
+// "Vary Radius: By Absolute Scalar"). Cell data: tree_id, order, axis, year_formed, alive (1/0).
+vtkSmartPointer<vtkPolyData> build_branches_block(const StandSnapshot& snapshot);
+
+// One vertex per leaf ball at its centre. Point data: radius (m), light (relative, 0..1; NaN when the
+// tree has no light values), tree_id.
+vtkSmartPointer<vtkPolyData> build_leaf_balls_block(const StandSnapshot& snapshot);
+
+// One vertex per tree at its stem base. Point data: tree_id, label (survey id), status (TreeStatus code),
+// age_years, height_m, dbh_cm, crown_base_m, crown_radius_m, volume_m3, mean_light.
+vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot);
+
+// branches, leaf_balls, trees — in that order.
+std::vector<StandBlock> default_stand_blocks();
+
+// The multiblock of one output year: one block per builder, each block and the multiblock itself
+// carrying the stand age in a one-value field array `TimeValue` (and the run's `year_index`).
+vtkSmartPointer<vtkMultiBlockDataSet> build_stand_multiblock(const StandSnapshot& snapshot,
+                                                             const std::vector<StandBlock>& blocks);
+
+}  // namespace heliostand

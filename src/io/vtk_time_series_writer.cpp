@@ -1,0 +1,88 @@
+#include "io/vtk_time_series_writer.hpp"
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include <vtkXMLMultiBlockDataWriter.h>
+
+namespace heliostand {
+namespace fs = std::filesystem;
+
+VtkTimeSeriesWriter::VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks)
+    : folder_(folder), blocks_(std::move(blocks)) {}
+
+fs::path VtkTimeSeriesWriter::year_file(int stand_age) {
+  return fs::path(year_folder) / fmt::format("stand_age_{:04d}.vtm", stand_age);
+}
+
+namespace {
+
+// VTK 9.1 leaves empty blocks out of the .vtm, and writes no .vtm at all when every block is empty
+// (e.g. the year after the last tree was cut). The time step must still exist, so write an empty
+// multiblock that carries the year.
+std::string empty_year_vtm(const StandSnapshot& snapshot) {
+  return fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt32\">\n"
+      "  <vtkMultiBlockDataSet>\n  </vtkMultiBlockDataSet>\n"
+      "  <FieldData>\n"
+      "    <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n"
+      "    <DataArray type=\"Float64\" Name=\"year_index\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n"
+      "  </FieldData>\n"
+      "</VTKFile>\n",
+      snapshot.stand_age, snapshot.year_index);
+}
+
+// Moves `from` onto `to`, replacing whatever was there (a rewrite of the same year).
+void replace_with(const fs::path& from, const fs::path& to) {
+  if (fs::is_directory(to)) fs::remove_all(to);
+  fs::rename(from, to);
+}
+
+}  // namespace
+
+fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
+  const fs::path relative_vtm = year_file(snapshot.stand_age);
+  const fs::path final_vtm = folder_.path_of(relative_vtm);
+  const fs::path final_pieces = fs::path(final_vtm).replace_extension();  // the writer's piece folder
+  fs::create_directories(final_vtm.parent_path());
+
+  // The writer names the piece folder after the .vtm and references pieces by that name, so the
+  // whole year is written into a temporary folder under its final names, then moved into place:
+  // pieces first, the .vtm last, so a reader never finds a .vtm whose pieces are missing.
+  AtomicFile staging(final_pieces);  // temporary: stand/.stand_age_0025.tmp/ (removed if we throw)
+  fs::remove_all(staging.temporary_path());
+  fs::create_directories(staging.temporary_path());
+  const fs::path staged_vtm = staging.temporary_path() / final_vtm.filename();
+
+  auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
+  writer->SetFileName(staged_vtm.string().c_str());
+  writer->SetInputData(build_stand_multiblock(snapshot, blocks_));
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) {
+    throw OutputFolderError(fmt::format("VTK could not write {}", staged_vtm.string()));
+  }
+
+  if (!fs::exists(staged_vtm)) std::ofstream(staged_vtm) << empty_year_vtm(snapshot);
+
+  const fs::path staged_pieces = staging.temporary_path() / final_pieces.filename();
+  if (fs::exists(staged_pieces)) replace_with(staged_pieces, final_pieces);
+  fs::rename(staged_vtm, final_vtm);
+  fs::remove_all(staging.temporary_path());
+
+  folder_.record_output(relative_vtm);
+  if (fs::exists(final_pieces)) {
+    for (const fs::directory_entry& piece : fs::directory_iterator(final_pieces)) {
+      folder_.record_output(fs::relative(piece.path(), folder_.root()));
+    }
+  }
+
+  collection_.add(snapshot.stand_age, relative_vtm.generic_string());
+  folder_.write_file(collection_file, collection_.to_xml());
+  return relative_vtm;
+}
+
+}  // namespace heliostand

@@ -1,0 +1,38 @@
+#pragma once
+// Writes the stand as a ParaView time series: one multiblock file per output year
+// (stand/stand_age_0025.vtm + its piece folder stand/stand_age_0025/) and the index stand.pvd,
+// rewritten after every year so a run that stops early can still be opened.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/output_folder.hpp"
+#include "io/pvd_collection.hpp"
+#include "io/stand_snapshot.hpp"
+#include "io/vtk_stand_blocks.hpp"
+
+namespace heliostand {
+
+class VtkTimeSeriesWriter {
+ public:
+  static constexpr const char* collection_file = "stand.pvd";
+  static constexpr const char* year_folder = "stand";
+
+  explicit VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks = default_stand_blocks());
+
+  // Adds a block to every year written from now on (e.g. roots, soil).
+  void add_block(StandBlock block) { blocks_.push_back(std::move(block)); }
+
+  // Writes the year's multiblock and rewrites stand.pvd. Returns the .vtm path relative to the folder.
+  std::filesystem::path write_year(const StandSnapshot& snapshot);
+
+  // "stand/stand_age_0025.vtm" for stand age 25.
+  static std::filesystem::path year_file(int stand_age);
+
+ private:
+  OutputFolder& folder_;
+  std::vector<StandBlock> blocks_;
+  PvdCollection collection_;
+};
+
+}  // namespace heliostand

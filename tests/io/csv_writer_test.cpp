@@ -1,0 +1,92 @@
+#include "io/csv_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "io/csv_test_reader.hpp"
+#include "io/stand_tables.hpp"
+
+namespace heliostand {
+namespace {
+
+TEST(CsvField, PlainTextIsWrittenAsIs) {
+  EXPECT_EQ(csv_field("A-17"), "A-17");
+  EXPECT_EQ(csv_field(""), "");
+  EXPECT_EQ(csv_field("two words"), "two words");
+}
+
+TEST(CsvField, SeparatorsQuotesLineBreaksAndOuterSpacesAreQuoted) {
+  EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(csv_field("line\nbreak"), "\"line\nbreak\"");
+  EXPECT_EQ(csv_field("cr\r"), "\"cr\r\"");
+  EXPECT_EQ(csv_field(" padded"), "\" padded\"");
+  EXPECT_EQ(csv_field("padded "), "\"padded \"");
+}
+
+TEST(CsvNumber, FixedDecimalsRoundedNoNegativeZeroNaNEmpty) {
+  EXPECT_EQ(csv_number(1.0, 3), "1.000");
+  EXPECT_EQ(csv_number(2.34567, 2), "2.35");
+  EXPECT_EQ(csv_number(-12.5, 1), "-12.5");
+  EXPECT_EQ(csv_number(123456.0, 0), "123456");
+  EXPECT_EQ(csv_number(-0.0001, 3), "0.000");
+  EXPECT_EQ(csv_number(-0.0, 2), "0.00");
+  EXPECT_EQ(csv_number(std::numeric_limits<double>::quiet_NaN(), 2), "");
+}
+
+TEST(CsvWriter, RowsJoinFieldsWithCommasAndEndWithNewline) {
+  std::ostringstream out;
+  CsvWriter csv(out);
+  csv.header({"id", "label", "dbh_cm"});
+  csv.integer(7).text("X,1").number(12.345, 1).end_row();
+  csv.integer(-3).text("").number(std::numeric_limits<double>::quiet_NaN(), 1).end_row();
+  EXPECT_EQ(out.str(), "id,label,dbh_cm\n7,\"X,1\",12.3\n-3,,\n");
+}
+
+TEST(CsvWriter, AwkwardTextSurvivesARoundTrip) {
+  const std::vector<std::string> fields = {"plain", "com,ma", "quo\"te", "new\nline", " lead", "", "\"\""};
+  std::ostringstream out;
+  CsvWriter csv(out);
+  for (const std::string& f : fields) csv.text(f);
+  csv.end_row();
+  csv.text("second").end_row();
+  const auto records = testing::parse_csv(out.str());
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0], fields);
+  EXPECT_EQ(records[1], std::vector<std::string>{"second"});
+}
+
+TEST(StandTables, HeadersHaveTheDocumentedColumns) {
+  std::ostringstream out;
+  CsvWriter csv(out);
+  write_stand_table_header(csv);
+  write_trees_header(csv);
+  write_events_header(csv);
+  const auto records = testing::parse_csv(out.str());
+  ASSERT_EQ(records.size(), 3u);
+  EXPECT_EQ(records[0], (std::vector<std::string>{
+                            "stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
+                            "mean_height_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
+                            "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha"}));
+  EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status", "age",
+                                                  "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",
+                                                  "volume_m3", "leaf_balls", "mean_light"}));
+  EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "event", "reason", "dbh_cm",
+                                                  "height_m", "volume_m3"}));
+}
+
+TEST(StandTables, EventRowCarriesKindReasonAndQuotedLabel) {
+  std::ostringstream out;
+  CsvWriter csv(out);
+  write_event_row(csv, {45, 12, "P3,12", TreeEventKind::removed, "thinning:low", 23.456, 18.2, 0.41234});
+  write_event_row(csv, {46, 13, "P3-13", TreeEventKind::died, "suppression", 8.0, 9.0, 0.02});
+  EXPECT_EQ(out.str(),
+            "45,12,\"P3,12\",removed,thinning:low,23.46,18.200,0.4123\n"
+            "46,13,P3-13,died,suppression,8.00,9.000,0.0200\n");
+}
+
+}  // namespace
+}  // namespace heliostand

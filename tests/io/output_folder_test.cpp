@@ -1,0 +1,113 @@
+#include "io/output_folder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "io/temp_folder.hpp"
+
+namespace heliostand {
+namespace {
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(OutputFolder, CreatesAMissingFolderWithParents) {
+  testing::TempFolder tmp("output_folder_create");
+  const fs::path root = tmp.path() / "a" / "b";
+  OutputFolder folder(root, false);
+  EXPECT_TRUE(fs::is_directory(root));
+  EXPECT_TRUE(fs::exists(root / OutputFolder::marker_name));
+}
+
+TEST(OutputFolder, AcceptsAnExistingEmptyFolder) {
+  testing::TempFolder tmp("output_folder_empty");
+  EXPECT_NO_THROW(OutputFolder(tmp.path(), false));
+}
+
+TEST(OutputFolder, RefusesANonEmptyFolderWithoutForceAndSaysWhy) {
+  testing::TempFolder tmp("output_folder_refuse");
+  std::ofstream(tmp.path() / "notes.txt") << "keep me";
+  try {
+    OutputFolder folder(tmp.path(), false);
+    FAIL() << "a non-empty folder was accepted";
+  } catch (const OutputFolderError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(tmp.path().string()), std::string::npos) << message;
+    EXPECT_NE(message.find("not empty"), std::string::npos) << message;
+    EXPECT_NE(message.find("--force"), std::string::npos) << message;
+  }
+  EXPECT_EQ(read_text(tmp.path() / "notes.txt"), "keep me");
+}
+
+TEST(OutputFolder, ForceReplacesAnEarlierRun) {
+  testing::TempFolder tmp("output_folder_force");
+  {
+    OutputFolder first(tmp.path(), false);
+    first.write_file("stand_table.csv", "old\n");
+  }
+  OutputFolder second(tmp.path(), true);
+  EXPECT_FALSE(fs::exists(tmp.path() / "stand_table.csv"));
+  EXPECT_TRUE(fs::exists(tmp.path() / OutputFolder::marker_name));
+}
+
+TEST(OutputFolder, ForceStillRefusesAFolderThatIsNotAnEarlierRun) {
+  testing::TempFolder tmp("output_folder_foreign");
+  std::ofstream(tmp.path() / "thesis.tex") << "precious";
+  EXPECT_THROW(OutputFolder(tmp.path(), true), OutputFolderError);
+  EXPECT_EQ(read_text(tmp.path() / "thesis.tex"), "precious");
+}
+
+TEST(OutputFolder, RefusesAFileInPlaceOfTheFolder) {
+  testing::TempFolder tmp("output_folder_file");
+  std::ofstream(tmp.path() / "out") << "x";
+  EXPECT_THROW(OutputFolder(tmp.path() / "out", true), OutputFolderError);
+}
+
+TEST(OutputFolder, WriteFileLeavesOnlyTheFinalFileAndRecordsIt) {
+  testing::TempFolder tmp("output_folder_write");
+  OutputFolder folder(tmp.path() / "run", false);
+  folder.write_file("sub/table.csv", "a,b\n");
+  folder.write_file("sub/table.csv", "a,b\n1,2\n");  // a rewrite replaces the file
+  EXPECT_EQ(read_text(tmp.path() / "run" / "sub" / "table.csv"), "a,b\n1,2\n");
+  EXPECT_EQ(folder.output_files(), std::vector<std::string>{"sub/table.csv"});
+  for (const auto& entry : fs::recursive_directory_iterator(tmp.path())) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
+TEST(AtomicFile, TemporaryIsAHiddenSiblingAndVanishesIfNeverCommitted) {
+  testing::TempFolder tmp("atomic_file");
+  const fs::path target = tmp.path() / "run.json";
+  fs::path temporary;
+  try {
+    AtomicFile file(target);
+    temporary = file.temporary_path();
+    EXPECT_EQ(temporary, tmp.path() / ".run.json.tmp");
+    std::ofstream(temporary) << "{";
+    throw std::runtime_error("simulated failure while writing");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_FALSE(fs::exists(target));
+}
+
+TEST(AtomicFile, CommitRenamesOverAnOlderFile) {
+  testing::TempFolder tmp("atomic_commit");
+  const fs::path target = tmp.path() / "stand.pvd";
+  std::ofstream(target) << "old";
+  AtomicFile file(target);
+  std::ofstream(file.temporary_path()) << "new";
+  file.commit();
+  EXPECT_EQ(read_text(target), "new");
+  EXPECT_FALSE(fs::exists(file.temporary_path()));
+}
+
+}  // namespace
+}  // namespace heliostand

@@ -1,0 +1,87 @@
+#include "stand/stand_metrics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace heliostand {
+namespace {
+
+TreeSnapshot tree_with(double dbh_cm, double height_m, double volume_m3, TreeStatus status = TreeStatus::alive) {
+  TreeSnapshot t;
+  t.dbh_cm = dbh_cm;
+  t.height_m = height_m;
+  t.volume_m3 = volume_m3;
+  t.status = status;
+  return t;
+}
+
+TEST(StandMetrics, PerHectareValuesOfThreeTreesOnTheHundredthOfAHectare) {
+  const std::vector<TreeMeasurement> trees = {{10, 10, 0.1}, {20, 15, 0.2}, {30, 20, 0.3}};
+  const StandMetrics m = measure_stand(trees, 0.01);
+  EXPECT_DOUBLE_EQ(m.stems_per_ha, 300.0);
+  // π (0.05² + 0.10² + 0.15²) m² = 0.035 π m² on 0.01 ha
+  EXPECT_NEAR(m.basal_area_m2_per_ha, 3.5 * std::numbers::pi, 1e-12);
+  EXPECT_NEAR(m.qmd_cm, std::sqrt(1400.0 / 3.0), 1e-12);  // sqrt((100 + 400 + 900) / 3) = 21.602 cm
+  EXPECT_DOUBLE_EQ(m.mean_height_m, 15.0);
+  EXPECT_DOUBLE_EQ(m.top_height_m, 20.0);  // 100/ha on 0.01 ha = one tree: the thickest
+  EXPECT_NEAR(m.volume_m3_per_ha, 60.0, 1e-12);
+}
+
+TEST(StandMetrics, TopHeightTreeCountIsHundredPerHectareRoundedAtLeastOne) {
+  EXPECT_EQ(top_height_tree_count(1.0), 100);
+  EXPECT_EQ(top_height_tree_count(0.05), 5);
+  EXPECT_EQ(top_height_tree_count(0.026), 3);  // 2.6 trees → 3
+  EXPECT_EQ(top_height_tree_count(0.004), 1);  // 0.4 trees → at least one
+}
+
+TEST(StandMetrics, TopHeightFollowsTheThickestTreesNotTheTallest) {
+  // The tallest tree (22 m) is not among the two thickest; 0.02 ha → 2 trees: dbh 30 (18 m) and 25 (16 m).
+  const std::vector<TreeMeasurement> trees = {{20, 22, 0}, {30, 18, 0}, {10, 12, 0}, {25, 16, 0}};
+  EXPECT_DOUBLE_EQ(top_height_m(trees, 0.02), 17.0);
+  // More trees requested than present: the mean of all.
+  EXPECT_DOUBLE_EQ(top_height_m(trees, 1.0), (22.0 + 18 + 12 + 16) / 4);
+}
+
+TEST(StandMetrics, EmptyStandHasZeroDensityAndUndefinedMeans) {
+  const StandMetrics m = measure_stand({}, 0.1);
+  EXPECT_EQ(m.stems_per_ha, 0.0);
+  EXPECT_EQ(m.basal_area_m2_per_ha, 0.0);
+  EXPECT_TRUE(std::isnan(m.qmd_cm));
+  EXPECT_TRUE(std::isnan(m.mean_height_m));
+  EXPECT_TRUE(std::isnan(m.top_height_m));
+}
+
+TEST(StandMetrics, RejectsANonPositivePlotArea) {
+  EXPECT_THROW(measure_stand({}, 0.0), std::invalid_argument);
+  EXPECT_THROW(stand_table_row(StandSnapshot{}, -5.0, {}), std::invalid_argument);
+}
+
+TEST(StandTableRow, CountsOnlyLivingTreesAndTurnsEventsIntoPerHectareFlows) {
+  StandSnapshot snapshot;
+  snapshot.stand_age = 35;
+  snapshot.year_index = 10;
+  snapshot.trees = {tree_with(20, 15, 0.25), tree_with(30, 20, 0.75), tree_with(12, 9, 0.05, TreeStatus::dead),
+                    tree_with(40, 22, 1.5, TreeStatus::removed)};
+  const std::vector<TreeEvent> events = {
+      {35, 4, "t4", TreeEventKind::removed, "thinning", 40, 22, 1.5},
+      {34, 5, "t5", TreeEventKind::removed, "thinning", 20, 15, 0.5},
+      {35, 3, "t3", TreeEventKind::died, "suppression", 12, 9, 0.05},
+  };
+  const StandTableRow row = stand_table_row(snapshot, 500.0, events);  // 500 m² = 0.05 ha
+  EXPECT_EQ(row.stand_age, 35);
+  EXPECT_EQ(row.year_index, 10);
+  EXPECT_DOUBLE_EQ(row.living.stems_per_ha, 40.0);                                  // 2 / 0.05
+  EXPECT_NEAR(row.living.basal_area_m2_per_ha, std::numbers::pi * 0.0325 / 0.05, 1e-12);  // π(0.01+0.0225)
+  EXPECT_NEAR(row.living.volume_m3_per_ha, 20.0, 1e-12);                            // 1.0 / 0.05
+  EXPECT_DOUBLE_EQ(row.living.mean_height_m, 17.5);
+  EXPECT_DOUBLE_EQ(row.living.top_height_m, 17.5);  // 5 trees wanted on 0.05 ha, only 2 alive: mean of both
+  EXPECT_DOUBLE_EQ(row.removed_stems_per_ha, 40.0);
+  EXPECT_NEAR(row.removed_basal_area_m2_per_ha, std::numbers::pi, 1e-12);  // π(0.04 + 0.01) / 0.05
+  EXPECT_NEAR(row.removed_volume_m3_per_ha, 40.0, 1e-12);                  // 2.0 / 0.05
+  EXPECT_DOUBLE_EQ(row.dead_stems_per_ha, 20.0);
+}
+
+}  // namespace
+}  // namespace heliostand
