@@ -157,6 +157,19 @@ TEST_F(StandOutputRun, TablesOnlyWhenVtkIsOff) {
   EXPECT_TRUE(fs::exists(root_ / "trees.csv"));
 }
 
+TEST_F(StandOutputRun, ABadPlotAreaIsRefusedBeforeTheFolderIsTouched) {
+  EXPECT_THROW(StandOutput({root_, false, 0.0}), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(root_));
+}
+
+TEST_F(StandOutputRun, ANonEmptyFolderIsRefusedAndLeftAlone) {
+  fs::create_directories(root_);
+  std::ofstream(root_ / "field_notes.txt") << "plot 3";
+  EXPECT_THROW(StandOutput({root_, false, 100.0}), OutputFolderError);
+  EXPECT_EQ(read_text(root_ / "field_notes.txt"), "plot 3");
+  EXPECT_EQ(std::distance(fs::directory_iterator(root_), fs::directory_iterator()), 1);
+}
+
 // Writes the tiny two-year stand the ParaView render check (tests/scripts/paraview.cmake) opens.
 // Disabled in the ordinary run; CTest calls it explicitly as the fixture of that check.
 TEST(ParaViewFixture, DISABLED_WriteTinyStand) {
