@@ -12,9 +12,17 @@ StandOutput::Table::Table(const std::filesystem::path& final_path)
   if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
 }
 
+namespace {
+
+double checked_plot_area(double plot_area_m2) {
+  if (!(plot_area_m2 > 0)) throw std::invalid_argument("stand output: plot area must be > 0 m²");
+  return plot_area_m2;
+}
+
+}  // namespace
+
 StandOutput::StandOutput(const StandOutputOptions& options)
-    : folder_(options.folder, options.force), plot_area_m2_(options.plot_area_m2) {
-  if (!(plot_area_m2_ > 0)) throw std::invalid_argument("stand output: plot area must be > 0 m²");
+    : plot_area_m2_(checked_plot_area(options.plot_area_m2)), folder_(options.folder, options.force) {
   if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file));

@@ -59,8 +59,8 @@ class StandOutput {
 
   void close_tables();
 
+  double plot_area_m2_;  // declared before folder_: a bad area is refused before the folder is touched
   OutputFolder folder_;
-  double plot_area_m2_;
   std::unique_ptr<VtkTimeSeriesWriter> vtk_;
   std::unique_ptr<Table> stand_table_, trees_, events_;
   std::vector<TreeEvent> events_since_last_row_;

@@ -1,5 +1,6 @@
 #include "io/vtk_time_series_writer.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -75,9 +76,10 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
 
   folder_.record_output(relative_vtm);
   if (fs::exists(final_pieces)) {
-    for (const fs::directory_entry& piece : fs::directory_iterator(final_pieces)) {
-      folder_.record_output(fs::relative(piece.path(), folder_.root()));
-    }
+    std::vector<fs::path> pieces;
+    for (const fs::directory_entry& piece : fs::directory_iterator(final_pieces)) pieces.push_back(piece.path());
+    std::sort(pieces.begin(), pieces.end());  // directory order is arbitrary; run.json should not be
+    for (const fs::path& piece : pieces) folder_.record_output(fs::relative(piece, folder_.root()));
   }
 
   collection_.add(snapshot.stand_age, relative_vtm.generic_string());

@@ -95,7 +95,7 @@ struct SyntheticStand {
 
 inline SyntheticStand make_synthetic_stand(int stand_age, int year_index) {
   SyntheticStand stand;
-  const glm::dvec3 positions[] = {{2.0, 2.0, 0.0}, {7.0, 3.0, 0.0}, {4.0, 8.0, 0.0}};
+  const glm::dvec3 positions[] = {{2.0, 2.0, 0.0}, {7.0, 3.0, 0.0}, {7.5, 8.0, 0.0}};
   const char* labels[] = {"A-1", "A,2", "B \"3\""};  // labels that need CSV quoting
   stand.heights = {stand_age / 2 + 1, stand_age / 2, stand_age / 2 - 1};
   for (int i = 0; i < 3; ++i) stand.trees.push_back(make_synthetic_tree(positions[i], stand.heights[i]));

@@ -1,0 +1,16 @@
+# ParaView render check: the output tests write a tiny two-year stand, pvbatch renders its first and
+# last time step (tubes by absolute radius, leaf-ball spheres coloured by light) and check_png.py
+# checks the images show something. Reported as skipped (exit 77) where ParaView, xvfb or apt are missing.
+add_test(NAME io.paraview.write_tiny_stand
+         COMMAND heliostand_tests --gtest_also_run_disabled_tests --gtest_filter=ParaViewFixture.DISABLED_WriteTinyStand)
+set_tests_properties(io.paraview.write_tiny_stand PROPERTIES FIXTURES_SETUP heliostand_tiny_stand_series)
+
+add_test(NAME io.paraview.render_tiny_stand
+         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh
+                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/stand.pvd
+                 ${PROJECT_BINARY_DIR}/tests/paraview/png)
+set_tests_properties(io.paraview.render_tiny_stand PROPERTIES
+  FIXTURES_REQUIRED heliostand_tiny_stand_series
+  SKIP_RETURN_CODE 77
+  TIMEOUT 600
+  LABELS "paraview")

@@ -1,0 +1,147 @@
+"""Render a heliostand output series with ParaView (run with pvbatch; see render.sh).
+
+    pvbatch render_stand.py STAND_PVD OUT_DIR
+
+Branches become tubes whose radius is the wood radius written as point data (Tube filter,
+"Vary Radius: By Absolute Scalar"); leaf balls become spheres of their own radius coloured by
+their relative light. One PNG for the first and one for the last time step, both framed on the
+stand as it is at the last time step so the two images compare directly.
+"""
+import os
+import sys
+
+from paraview.simple import (ColorBy, CreateView, Delete, ExtractBlock, GetColorTransferFunction,
+                             GetScalarBar, Glyph, Plane, PVDReader, Render, SaveScreenshot, Show, Tube)
+
+IMAGE_SIZE = [1200, 800]
+BARK = [0.45, 0.30, 0.18]
+DEAD_WOOD = [0.60, 0.58, 0.55]
+GROUND = [0.55, 0.62, 0.45]
+SKY = [0.86, 0.91, 0.97]
+INK = [0.1, 0.1, 0.1]
+
+
+def time_steps(reader):
+    values = reader.TimestepValues
+    if values is None:
+        return [0.0]
+    try:
+        return list(values)
+    except TypeError:  # a single time step comes back as a bare number
+        return [values]
+
+
+def block(reader, name):
+    """One named block of the yearly multiblock (empty if absent that year). It stays a multiblock of
+    polydata, which Tube and Glyph accept; MergeBlocks would turn it into an unstructured grid."""
+    extract = ExtractBlock(Input=reader)
+    extract.Selectors = ["/Root/" + name]
+    return extract
+
+
+def show_branches(reader, view):
+    tubes = Tube(Input=block(reader, "branches"))
+    tubes.Scalars = ["POINTS", "radius"]
+    tubes.VaryRadius = "By Absolute Scalar"
+    tubes.NumberofSides = 10
+    tubes.Capping = 1
+    display = Show(tubes, view)
+    display.ColorArrayName = ["POINTS", ""]  # solid bark colour, not a data array
+    display.AmbientColor = BARK
+    display.DiffuseColor = BARK
+    return tubes
+
+
+def show_leaf_balls(reader, view):
+    spheres = Glyph(Input=block(reader, "leaf_balls"), GlyphType="Sphere")
+    spheres.ScaleArray = ["POINTS", "radius"]
+    spheres.ScaleFactor = 2.0  # the glyph sphere has radius 0.5: scale by 2 r to get radius r
+    spheres.OrientationArray = ["POINTS", "No orientation array"]
+    spheres.GlyphMode = "All Points"
+    spheres.GlyphType.ThetaResolution = 12
+    spheres.GlyphType.PhiResolution = 8
+    display = Show(spheres, view)
+    ColorBy(display, ("POINTS", "light"))
+    light = GetColorTransferFunction("light")
+    light.ApplyPreset("Viridis (matplotlib)", True)
+    light.RescaleTransferFunction(0.0, 1.0)  # relative light: a fixed scale keeps years comparable
+    display.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(light, view)
+    bar.Title = "relative light"
+    bar.ComponentTitle = ""
+    bar.TitleColor = INK
+    bar.LabelColor = INK
+    return spheres
+
+
+def show_ground(bounds, view):
+    x0, x1, y0, y1, z0, _ = bounds
+    margin = 0.05 * max(x1 - x0, y1 - y0, 1.0)
+    ground = Plane(Origin=[x0 - margin, y0 - margin, z0], Point1=[x1 + margin, y0 - margin, z0],
+                   Point2=[x0 - margin, y1 + margin, z0])
+    display = Show(ground, view)
+    display.AmbientColor = GROUND
+    display.DiffuseColor = GROUND
+
+
+def frame_stand(view, bounds):
+    """Look at the stand from the south-east and above, then zoom so everything is in view."""
+    x0, x1, y0, y1, z0, z1 = bounds
+    centre = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2]
+    size = max(x1 - x0, y1 - y0, z1 - z0, 1.0)
+    view.CameraFocalPoint = centre
+    view.CameraPosition = [centre[0] + 1.2 * size, centre[1] - 1.8 * size, centre[2] + 1.0 * size]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    view.ResetCamera(False)
+    view.GetActiveCamera().Dolly(1.25)  # ResetCamera fits the bounding sphere, which leaves wide margins
+
+
+def main(argv):
+    if len(argv) != 3:
+        sys.stderr.write("usage: pvbatch render_stand.py STAND_PVD OUT_DIR\n")
+        return 2
+    pvd, out_dir = argv[1], argv[2]
+    if not os.path.isfile(pvd):
+        sys.stderr.write("error: %s: no such file\n" % pvd)
+        return 2
+    os.makedirs(out_dir, exist_ok=True)
+
+    reader = PVDReader(FileName=pvd)
+    times = time_steps(reader)
+    view = CreateView("RenderView")
+    view.ViewSize = IMAGE_SIZE
+    view.OrientationAxesVisibility = 1
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.Background = SKY
+
+    tubes = show_branches(reader, view)
+    show_leaf_balls(reader, view)
+
+    # Frame on the last (largest) year so both images share one camera.
+    view.ViewTime = times[-1]
+    tubes.UpdatePipeline(times[-1])
+    bounds = reader.GetDataInformation().GetBounds()
+    show_ground(bounds, view)
+    frame_stand(view, bounds)
+
+    written = []
+    for t in sorted({times[0], times[-1]}):
+        view.ViewTime = t
+        Render(view)
+        name = os.path.join(out_dir, "stand_age_%04d.png" % int(round(t)))
+        SaveScreenshot(name, view, ImageResolution=IMAGE_SIZE)
+        written.append(name)
+    for name in written:
+        print(name)
+    # Release the render window while the X display still exists: left to interpreter teardown,
+    # pvbatch 5.11 under xvfb-run fails with GLXBadContext and exit status 1 after the images are saved.
+    Delete(view)
+    del view
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
