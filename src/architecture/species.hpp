@@ -45,7 +45,7 @@ struct SpeciesParameters {
 
   // eqs. 12-13  growth stop and dead-branch loss (the seed gives no values: ours, docs/model.md).
   double growth_stop_years_first_order = 18.0;  // first-order branch lifespan
-  double activity = -8.0;                       // added per order (eq. 12); smaller = weaker tree
+  double activity = -9.0;                       // added per order (eq. 12); smaller = weaker tree
   double dead_branch_attached_years = 10.0;     // eq. 13 denominator
 
   // Lower orders and irregularity (seed 001 §3.2 text; values ours).

@@ -1,0 +1,295 @@
+#include "architecture/conifer_tree.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "architecture/branch_angle.hpp"
+#include "architecture/branch_diameter.hpp"
+#include "architecture/elongation.hpp"
+#include "architecture/height_curve.hpp"
+#include "architecture/stem_taper.hpp"
+#include "geometry/angles.hpp"
+
+namespace heliostand {
+namespace {
+
+ConiferTree grown(int age, TreeCalibration calibration = {}, std::uint64_t seed = 42, int tree_id = 1,
+                  SpeciesParameters species = {}) {
+  ConiferTree tree(species, calibration, {10.0, -5.0, 1.0}, seed, tree_id);
+  tree.grow_to_age(age);
+  return tree;
+}
+
+double angle_from_vertical_deg(glm::dvec3 v) { return degrees(std::acos(v.z / glm::length(v))); }
+
+TEST(ConiferTree, StemFollowsTheHeightCurveOneShootPerYear) {
+  const ConiferTree tree = grown(20);
+  EXPECT_NEAR(tree.height_m(), tree_height_m(SpeciesParameters{}, 28.0, 20.0), 1e-12);
+  const auto& stem = tree.axes()[0].shoots;
+  ASSERT_EQ(stem.size(), 20u);
+  for (std::size_t i = 0; i < stem.size(); ++i) {
+    const Shoot& s = tree.shoots()[stem[i]];
+    EXPECT_EQ(s.year_formed, static_cast<int>(i) + 1);
+    EXPECT_NEAR(s.tip.z - tree.stem_base().z, tree_height_m(SpeciesParameters{}, 28.0, i + 1.0), 1e-9);
+    EXPECT_NEAR(s.tip.x, tree.stem_base().x, 1e-12);  // vertical
+  }
+}
+
+TEST(ConiferTree, WhorlsAverageEq3BranchesAndSitOnLastYearsLeaderTip) {
+  // Long-lived first-order branches so every whorl is still there to count; 200 trees × 19 whorls.
+  TreeCalibration calibration;
+  calibration.growth_stop_years_first_order = 100.0;
+  calibration.elongation_scale = 0.05;  // tiny shoots: no laterals, fast
+  std::map<int, int> per_whorl;
+  int whorls = 0, branches = 0;
+  for (int id = 0; id < 200; ++id) {
+    const ConiferTree tree = grown(20, calibration, 9, id);
+    per_whorl.clear();
+    for (const BranchAxis& axis : tree.axes()) {
+      if (axis.order != 1) continue;
+      ++per_whorl[axis.year_formed];
+      const Shoot& first = tree.shoots()[axis.shoots.front()];
+      EXPECT_NEAR(first.base.z - tree.stem_base().z, tree_height_m(SpeciesParameters{}, 28.0, axis.year_formed - 1),
+                  1e-9);
+    }
+    EXPECT_EQ(per_whorl.size(), 19u);  // one whorl a year from age 2
+    for (const auto& [year, n] : per_whorl) ++whorls, branches += n;
+  }
+  // 3800 whorls: standard error sqrt(0.564 × 0.436 / 3800) = 0.0080; 0.035 is 4.4 standard errors
+  // (and rejects a plain 4-or-5 coin, mean 4.5).
+  EXPECT_NEAR(static_cast<double>(branches) / whorls, 4.564, 0.035);
+}
+
+TEST(ConiferTree, NewWhorlTipsLieOnTheCrownCone) {
+  const ConiferTree tree = grown(12);  // elongation scale 1: eq. 9 unscaled
+  const glm::dvec3 top = tree.stem_base() + glm::dvec3{0, 0, tree.height_m()};
+  int checked = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 1 || axis.year_formed != 12) continue;
+    const Shoot& s = tree.shoots()[axis.shoots.front()];
+    const glm::dvec3 from_top = s.tip - top;
+    EXPECT_NEAR(degrees(std::atan2(std::hypot(from_top.x, from_top.y), -from_top.z)),
+                crown_angle_deg(SpeciesParameters{}, 12.0), 1e-6);
+    ++checked;
+  }
+  EXPECT_GE(checked, 4);
+}
+
+TEST(ConiferTree, UndisturbedFirstOrderChordFollowsEq4AndTheTipTurnsUp) {
+  const ConiferTree tree = grown(25);
+  int checked = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 1 || !axis.alive) continue;
+    const glm::dvec3 chord = tree.shoots()[axis.shoots.back()].tip - tree.shoots()[axis.shoots.front()].base;
+    // eq. 4: 60 + (0.3 + 0.5) × years since emergence
+    EXPECT_NEAR(angle_from_vertical_deg(chord), 60.0 + 0.8 * (25 - axis.year_formed), 1e-6);
+    if (axis.shoots.size() >= 3) {
+      const Shoot& newest = tree.shoots()[axis.shoots.back()];
+      EXPECT_LT(angle_from_vertical_deg(newest.tip - newest.base), angle_from_vertical_deg(chord));  // anti-gravity
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST(ConiferTree, FirstOrderElongationFollowsEq8) {
+  const ConiferTree tree = grown(15);
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 1 || axis.shoots.size() < 5) continue;
+    double total = 0.0;
+    for (int s : axis.shoots) total += glm::length(tree.shoots()[s].tip - tree.shoots()[s].base);
+    EXPECT_NEAR(total, total_elongation_m(axis.initial_elongation_m, axis.shoots.size(), 0.9), 1e-9);
+  }
+}
+
+TEST(ConiferTree, SecondOrderPairsFlushAtLastYearsTipWithLinearElongation) {
+  const ConiferTree tree = grown(10);
+  int pairs = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 2) continue;
+    const Shoot& first = tree.shoots()[axis.shoots.front()];
+    const Shoot& bearing = tree.shoots()[first.parent];
+    EXPECT_EQ(bearing.axis, axis.parent_axis);
+    EXPECT_EQ(bearing.year_formed, axis.year_formed - 1);
+    EXPECT_NEAR(glm::length(first.base - bearing.tip), 0.0, 1e-12);
+    EXPECT_NEAR(axis.initial_elongation_m, 0.45 * glm::length(bearing.tip - bearing.base), 1e-12);
+    ++pairs;
+  }
+  EXPECT_GT(pairs, 20);
+}
+
+TEST(ConiferTree, LowerBranchesStopDieAndFallSoTheCrownBaseRises) {
+  TreeCalibration calibration;
+  calibration.growth_stop_years_first_order = 10.0;
+  const SpeciesParameters species;  // dead branches stay attached 10 years
+  ConiferTree tree(species, calibration, {}, 3, 7);
+  double previous_base = -1.0;
+  for (int age = 1; age <= 30; ++age) {
+    tree.grow_year();
+    if (age < 12) continue;
+    // Living whorls are those formed in the last 10 years: the lowest from age - 9, at height H(age - 10).
+    EXPECT_NEAR(tree.crown_base_m(), tree_height_m(species, 28.0, age - 10), 1e-9) << "age " << age;
+    EXPECT_GT(tree.crown_base_m(), previous_base);
+    previous_base = tree.crown_base_m();
+  }
+  int dead_first_order = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 1) continue;
+    const int years_since_emergence = 30 - axis.year_formed;
+    EXPECT_EQ(axis.alive, years_since_emergence < 10);
+    if (axis.alive) continue;
+    ++dead_first_order;
+    const int years_dead = 30 - axis.year_stopped;
+    EXPECT_LT(years_dead, 10) << "a branch dead for 10 years has fallen";
+    double length = 0.0;
+    for (int s : axis.shoots) {
+      EXPECT_FALSE(tree.shoots()[s].alive);
+      length += glm::length(tree.shoots()[s].tip - tree.shoots()[s].base);
+    }
+    // eq. 13: (years dead / 10) of the length at death has gone from the tip; a shoot falls once it lies
+    // wholly in that lost part, so the remaining tip shoot straddles the boundary.
+    const double kept = (1.0 - years_dead / 10.0) * axis.length_at_death_m;
+    const Shoot& tip = tree.shoots()[axis.shoots.back()];
+    EXPECT_GE(length, kept - 1e-9);
+    EXPECT_LT(length - glm::length(tip.tip - tip.base), kept);
+    if (years_dead >= 2) EXPECT_LT(length, axis.length_at_death_m - 1e-9);  // something has already fallen
+  }
+  EXPECT_GT(dead_first_order, 20);  // dead branches persist below the crown
+}
+
+TEST(ConiferTree, SameSeedSameTreeDifferentSeedDifferentTree) {
+  const ConiferTree a = grown(15, {}, 42, 1), b = grown(15, {}, 42, 1);
+  ASSERT_EQ(a.shoots().size(), b.shoots().size());
+  for (std::size_t i = 0; i < a.shoots().size(); ++i) {
+    EXPECT_EQ(a.shoots()[i].tip, b.shoots()[i].tip);
+    EXPECT_EQ(a.shoots()[i].parent, b.shoots()[i].parent);
+  }
+  const ConiferTree c = grown(15, {}, 43, 1), d = grown(15, {}, 42, 2);
+  auto first_whorl_tip = [](const ConiferTree& t) { return t.shoots()[t.axes()[1].shoots.front()].tip; };
+  EXPECT_NE(first_whorl_tip(a), first_whorl_tip(c));
+  EXPECT_NE(first_whorl_tip(a), first_whorl_tip(d));
+}
+
+TEST(ConiferTree, GrowingOtherTreesInBetweenChangesNothing) {
+  ConiferTree alone({}, {}, {}, 5, 3);
+  alone.grow_to_age(12);
+  ConiferTree interleaved({}, {}, {}, 5, 3), neighbour({}, {}, {}, 5, 4);
+  for (int year = 0; year < 12; ++year) neighbour.grow_year(), interleaved.grow_year();
+  ASSERT_EQ(alone.shoots().size(), interleaved.shoots().size());
+  for (std::size_t i = 0; i < alone.shoots().size(); ++i) EXPECT_EQ(alone.shoots()[i].tip, interleaved.shoots()[i].tip);
+}
+
+TEST(ConiferTree, LeafBallsOnRecentLivingShootsWithClampedRadius) {
+  const ConiferTree tree = grown(20);
+  const SpeciesParameters species;
+  std::size_t expected = 0;
+  for (const Shoot& s : tree.shoots())
+    if (s.alive && s.year_formed > 20 - species.foliage_years) ++expected;
+  const auto balls = tree.leaf_balls();
+  EXPECT_EQ(balls.size(), expected);
+  std::size_t ball = 0;
+  for (const Shoot& s : tree.shoots()) {
+    if (!(s.alive && s.year_formed > 20 - species.foliage_years)) continue;
+    const double length = glm::length(s.tip - s.base);
+    EXPECT_EQ(balls[ball].centre, s.tip);
+    EXPECT_NEAR(balls[ball].radius, std::clamp(2.0 * length, 0.05, 0.6), 1e-12);
+    ++ball;
+  }
+}
+
+TEST(ConiferTree, CrownRadiusOfATwoYearOldIsTheMeanSectorReach) {
+  const SpeciesParameters species;
+  const ConiferTree tree = grown(2);
+  // Two stem shoots (balls on the axis: reach = ball radius, sector 0) and one whorl of branches at d0 = 60°,
+  // each one shoot of the eq.-9 length e.
+  const double h1 = tree_height_m(species, 28.0, 1.0), h2 = tree_height_m(species, 28.0, 2.0);
+  const double e = first_order_initial_elongation_m(species, h2 - h1, 2.0);
+  std::array<double, 8> reach{};
+  reach[0] = std::max(std::clamp(2.0 * h1, 0.05, 0.6), std::clamp(2.0 * (h2 - h1), 0.05, 0.6));
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 1) continue;
+    const int sector = static_cast<int>(axis.azimuth_rad / (pi / 4.0));
+    reach[sector] = std::max(reach[sector], e * std::sin(radians(60.0)) + std::clamp(2.0 * e, 0.05, 0.6));
+  }
+  double mean = 0.0;
+  for (double r : reach) mean += r / 8.0;
+  EXPECT_NEAR(tree.crown_radius_m(), mean, 1e-9);
+}
+
+TEST(ConiferTree, DbhAndVolumeFollowEq2AtTheTreesCrownBase) {
+  const ConiferTree tree = grown(35);
+  const StemTaper taper{tree.height_m(), tree.crown_base_m()};
+  EXPECT_NEAR(tree.dbh_cm(), taper.dbh_cm(SpeciesParameters{}), 1e-12);
+  EXPECT_NEAR(tree.stem_volume_m3(), taper.volume_m3(SpeciesParameters{}), 1e-12);
+  EXPECT_GT(tree.dbh_cm(), 15.0);
+  EXPECT_LT(tree.dbh_cm(), 40.0);
+}
+
+TEST(ConiferTree, RadiiFollowEq2OnTheStemAndEq11OnBranches) {
+  const ConiferTree tree = grown(15);
+  const SpeciesParameters species;
+  const StemTaper taper{tree.height_m(), tree.crown_base_m()};
+  for (int s : tree.axes()[0].shoots) {
+    const Shoot& shoot = tree.shoots()[s];
+    EXPECT_NEAR(shoot.base_radius_m, taper.diameter_cm(species, shoot.base.z - tree.stem_base().z) / 200.0, 1e-12);
+  }
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order == 0 || !axis.alive) continue;
+    double length = 0.0;
+    for (int s : axis.shoots) length += glm::length(tree.shoots()[s].tip - tree.shoots()[s].base);
+    EXPECT_NEAR(tree.shoots()[axis.shoots.front()].base_radius_m, branch_diameter_cm(species, length) / 200.0, 1e-12);
+    EXPECT_EQ(tree.shoots()[axis.shoots.back()].tip_radius_m, 0.0);
+  }
+}
+
+TEST(ConiferTree, RemovingAShootTakesEverythingItCarries) {
+  ConiferTree tree = grown(12);
+  int target_axis = -1;
+  for (std::size_t i = 0; i < tree.axes().size(); ++i)
+    if (tree.axes()[i].order == 1 && tree.axes()[i].shoots.size() >= 6) target_axis = static_cast<int>(i);
+  ASSERT_GE(target_axis, 0);
+  const int cut = tree.axes()[target_axis].shoots[2];
+  const glm::dvec3 kept_tip = tree.shoots()[tree.axes()[target_axis].shoots[1]].tip;
+  const std::size_t before = tree.shoots().size();
+  tree.remove_shoot(cut);
+  EXPECT_LT(tree.shoots().size(), before - 3);
+  // The branch now ends where its second shoot ended; the list stays consistent.
+  bool found = false;
+  for (const BranchAxis& axis : tree.axes())
+    if (axis.order == 1 && axis.shoots.size() == 2 && tree.shoots()[axis.shoots.back()].tip == kept_tip) found = true;
+  EXPECT_TRUE(found);
+  for (std::size_t i = 0; i < tree.shoots().size(); ++i) {
+    const Shoot& s = tree.shoots()[i];
+    ASSERT_LT(s.parent, static_cast<int>(i));
+    ASSERT_LT(s.axis, static_cast<int>(tree.axes().size()));
+    if (s.parent >= 0) EXPECT_NEAR(glm::length(tree.shoots()[s.parent].tip - s.base), 0.0, 1e-9);
+  }
+  tree.grow_year();  // and growth goes on from the cut
+  EXPECT_EQ(tree.age(), 13);
+}
+
+TEST(ConiferTree, BendingANewShootKeepsItsBaseAndLength) {
+  ConiferTree tree = grown(8);
+  const int i = tree.new_shoot_indices().back();
+  const Shoot before = tree.shoots()[i];
+  tree.bend_shoot(i, {0.0, 0.0, 1.0});
+  const Shoot& after = tree.shoots()[i];
+  EXPECT_EQ(after.base, before.base);
+  EXPECT_NEAR(glm::length(after.tip - after.base), glm::length(before.tip - before.base), 1e-12);
+  EXPECT_NEAR(angle_from_vertical_deg(after.tip - after.base), 0.0, 1e-6);
+  for (int n : tree.new_shoot_indices()) EXPECT_EQ(tree.shoots()[n].year_formed, 8);
+}
+
+TEST(ConiferTree, AThirtyFiveYearTreeStaysWithinAFewThousandLivingShoots) {
+  const ConiferTree tree = grown(35);  // species defaults
+  EXPECT_GT(tree.living_shoot_count(), 1000u);
+  EXPECT_LT(tree.living_shoot_count(), 8000u);  // 5.5 thousand with the defaults (docs/model.md)
+}
+
+}  // namespace
+}  // namespace heliostand
