@@ -214,6 +214,11 @@ class SurveyBuilder {
     auto warn = [&](SurveyColumn column, const std::string& rule) {
       const int n = tally_.missing[static_cast<std::size_t>(column)];
       if (n == 0) return;
+      // Id, age and species without a column are not guesses but the stand's own facts (line numbers,
+      // the scenario's stand age and default species): warn only about empty cells in a column that exists.
+      const bool stand_default = column == SurveyColumn::id || column == SurveyColumn::age ||
+                                 column == SurveyColumn::species;
+      if (stand_default && !layout_.has(column)) return;
       out.push_back(fmt::format("{}: column '{}': {} of {} values missing; {}", file_, layout_.name(column), n,
                                 records, rule));
     };
