@@ -299,6 +299,7 @@ class SurveyBuilder {
                                SurveyRecord& tree) {
     const auto height = value(row, C::height);
     const auto dbh = value(row, C::dbh);
+    if (height) tree.height_m = *height;  // lets the crown base be checked even when the DBH is bad
     // A bad height or dbh cell is already reported; imputing from the other would only add noise.
     if (row.bad[static_cast<std::size_t>(C::height)] || row.bad[static_cast<std::size_t>(C::dbh)]) return;
     if (!height && !dbh) {
