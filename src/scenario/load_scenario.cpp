@@ -62,7 +62,8 @@ void read_stand_survey(ScenarioDraft& draft, ScenarioProblems& problems) {
   Scenario& scenario = draft.scenario;
   SurveyReadOptions options;
   if (draft.plot_valid) options.plot = scenario.stand.plot;
-  if (draft.age_valid) options.stand_age_years = scenario.stand.age_at_survey_years;
+  // A bad stand age is reported already; a stand-in keeps every record from repeating it.
+  options.stand_age_years = draft.age_valid ? scenario.stand.age_at_survey_years : 1;
   options.species = scenario.species;
   options.default_species = scenario.stand.default_species.empty() ? draft.default_species_key.value_or("todomatsu")
                                                                     : scenario.stand.default_species;
