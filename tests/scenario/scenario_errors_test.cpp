@@ -185,6 +185,21 @@ TEST(ScenarioErrors, ThinningAgainstTheRunAndTheSurvey) {
                           "earlier thinnings)"));
 }
 
+TEST(ScenarioErrors, AStemTargetMustFallBelowTheEarlierOne) {
+  // 400 stems/ha at the survey; thinned to 300 at age 22, a later target of 350 cannot be a thinning.
+  // A basal-area event in between does not change what is known about stems.
+  EXPECT_THAT(problems_of("falling_targets", minimal_stand +
+                                                 "[[thinning]]\nage = 25\nmethod = \"from_below\"\n"   // 11
+                                                 "target_stems_per_ha = 350\n"                              // 14
+                                                 "[[thinning]]\nage = 22\nmethod = \"from_below\"\n"   // 15
+                                                 "target_stems_per_ha = 300\n"                              // 18
+                                                 "[[thinning]]\nage = 23\nmethod = \"from_above\"\n"
+                                                 "target_basal_area_m2_per_ha = 10\n"),
+              ElementsAre("scenario.toml:14: key 'thinning[1].target_stems_per_ha': target 350 stems/ha is not below "
+                          "the stand's density at that age (at most 300.0 stems/ha: 4 surveyed trees on 0.01 ha, less "
+                          "earlier thinnings)"));
+}
+
 TEST(ScenarioErrors, SurveyProblemsAreListedWithTheScenarios) {
   // Unknown species in the survey, plus a scenario problem: both reported, each with its own file and kind.
   const std::string survey = "x,y,h,species\n1,1,9,todomatsu\n12,2,9,karamatsu\n";
