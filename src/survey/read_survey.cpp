@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -225,11 +224,11 @@ class SurveyBuilder {
     warn(SurveyColumn::id, "using the line number as id");
     warn(SurveyColumn::height, "imputed from DBH by seed 001 eq. 2 (below-crown coefficients), inverted");
     warn(SurveyColumn::dbh, "imputed from height by seed 001 eq. 2 (below-crown coefficients)");
-    warn(SurveyColumn::crown_radius,
-         layout_.has(SurveyColumn::crown_diameter)
-             ? std::string("taken as half the crown diameter, or imputed from DBH where that is missing too")
-             : fmt::format("imputed as {:g} m + {:g} m/cm x DBH", options_.allometry.crown_radius_intercept_m,
-                           options_.allometry.crown_radius_per_dbh_m_per_cm));
+    const std::string crown_rule = fmt::format("crown radius imputed as {:g} m + {:g} m/cm x DBH",
+                                               options_.allometry.crown_radius_intercept_m,
+                                               options_.allometry.crown_radius_per_dbh_m_per_cm);
+    warn(SurveyColumn::crown_radius, crown_rule);
+    warn(SurveyColumn::crown_diameter, crown_rule);
     warn(SurveyColumn::crown_base,
          fmt::format("imputed as {:g} x height", options_.allometry.crown_base_height_ratio));
     warn(SurveyColumn::age, options_.stand_age_years
