@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -214,17 +213,22 @@ class SurveyBuilder {
     auto warn = [&](SurveyColumn column, const std::string& rule) {
       const int n = tally_.missing[static_cast<std::size_t>(column)];
       if (n == 0) return;
+      // Id, age and species without a column are not guesses but the stand's own facts (line numbers,
+      // the scenario's stand age and default species): warn only about empty cells in a column that exists.
+      const bool stand_default = column == SurveyColumn::id || column == SurveyColumn::age ||
+                                 column == SurveyColumn::species;
+      if (stand_default && !layout_.has(column)) return;
       out.push_back(fmt::format("{}: column '{}': {} of {} values missing; {}", file_, layout_.name(column), n,
                                 records, rule));
     };
     warn(SurveyColumn::id, "using the line number as id");
     warn(SurveyColumn::height, "imputed from DBH by seed 001 eq. 2 (below-crown coefficients), inverted");
     warn(SurveyColumn::dbh, "imputed from height by seed 001 eq. 2 (below-crown coefficients)");
-    warn(SurveyColumn::crown_radius,
-         layout_.has(SurveyColumn::crown_diameter)
-             ? std::string("taken as half the crown diameter, or imputed from DBH where that is missing too")
-             : fmt::format("imputed as {:g} m + {:g} m/cm x DBH", options_.allometry.crown_radius_intercept_m,
-                           options_.allometry.crown_radius_per_dbh_m_per_cm));
+    const std::string crown_rule = fmt::format("crown radius imputed as {:g} m + {:g} m/cm x DBH",
+                                               options_.allometry.crown_radius_intercept_m,
+                                               options_.allometry.crown_radius_per_dbh_m_per_cm);
+    warn(SurveyColumn::crown_radius, crown_rule);
+    warn(SurveyColumn::crown_diameter, crown_rule);
     warn(SurveyColumn::crown_base,
          fmt::format("imputed as {:g} x height", options_.allometry.crown_base_height_ratio));
     warn(SurveyColumn::age, options_.stand_age_years
@@ -294,6 +298,7 @@ class SurveyBuilder {
                                SurveyRecord& tree) {
     const auto height = value(row, C::height);
     const auto dbh = value(row, C::dbh);
+    if (height) tree.height_m = *height;  // lets the crown base be checked even when the DBH is bad
     // A bad height or dbh cell is already reported; imputing from the other would only add noise.
     if (row.bad[static_cast<std::size_t>(C::height)] || row.bad[static_cast<std::size_t>(C::dbh)]) return;
     if (!height && !dbh) {

@@ -66,6 +66,15 @@ TEST(ReadSurvey, CrownDiameterGivesHalfAsRadius) {
   EXPECT_DOUBLE_EQ(survey.trees[0].crown_radius_m, 1.6);
 }
 
+TEST(ReadSurvey, MissingCrownDiameterIsImputedAsARadiusWithAWarning) {
+  const auto file = write_test_file("diameter_gap.csv", "x,y,h,d,crown_diameter,hcb\n1,1,15,20,3.2,7\n2,1,15,20,,7\n");
+  const Survey survey = read_survey(file, plot_30x30());
+  EXPECT_DOUBLE_EQ(survey.trees[1].crown_radius_m, 1.65);  // 0.25 + 0.07 x 20
+  EXPECT_TRUE(survey.trees[1].imputed.crown_radius);
+  EXPECT_THAT(survey.warnings, ElementsAre(file.string() + ": column 'crown_diameter': 1 of 2 values missing; crown "
+                                                           "radius imputed as 0.25 m + 0.07 m/cm x DBH"));
+}
+
 TEST(ReadSurvey, QuotedFieldsAndSpacesAroundNumbers) {
   const auto file = write_test_file("quoted.csv",
                                     "id,x,y,height,dbh,species\n"
@@ -115,10 +124,11 @@ TEST(ReadSurvey, ImputesMissingValuesWithOneWarningPerColumn) {
                               "(below-crown coefficients), inverted",
                           f + ": column 'dbh': 1 of 3 values missing; imputed from height by seed 001 eq. 2 "
                               "(below-crown coefficients)",
-                          f + ": column 'crown_radius': 1 of 3 values missing; imputed as 0.25 m + 0.07 m/cm x DBH",
+                          f + ": column 'crown_radius': 1 of 3 values missing; crown radius imputed as 0.25 m + 0.07 m/cm x "
+                              "DBH",
                           f + ": column 'crown_base': 1 of 3 values missing; imputed as 0.45 x height",
-                          f + ": column 'age': 1 of 3 values missing; using the stand age at the survey, 35 years",
-                          f + ": column 'species': 3 of 3 values missing; using the default species 'todomatsu'"));
+                          f + ": column 'age': 1 of 3 values missing; using the stand age at the survey, 35 years"));
+  // No warning about species: without a species column every tree is of the scenario's default species.
 }
 
 TEST(ReadSurvey, ImputationUsesTheRecordsSpeciesStemCurve) {
@@ -138,10 +148,19 @@ TEST(ReadSurvey, IgnoresUnknownColumnsWithAWarning) {
   const Survey survey = read_survey(file, plot_30x30());
   ASSERT_EQ(survey.trees.size(), 1u);
   EXPECT_THAT(survey.warnings,
-              ElementsAre(file.string() + ": column 'notes' is not a survey column; ignored",
-                          file.string() + ": column 'id': 1 of 1 values missing; using the line number as id",
-                          file.string() + ": column 'age': 1 of 1 values missing; using the stand age at the survey, 35 years",
-                          file.string() + ": column 'species': 1 of 1 values missing; using the default species 'todomatsu'"));
+              ElementsAre(file.string() + ": column 'notes' is not a survey column; ignored"));
+}
+
+TEST(ReadSurvey, EmptySpeciesCellsGetTheDefaultSpeciesWithAWarning) {
+  auto options = plot_30x30();
+  options.default_species = "ezomatsu";
+  const auto file = write_test_file("species_gap.csv", "x,y,h,d,hcb,cr,species\n1,1,15,20,7,1.5,todomatsu\n2,1,15,20,7,1.5,\n");
+  const Survey survey = read_survey(file, options);
+  EXPECT_EQ(survey.trees[0].species, "todomatsu");
+  EXPECT_EQ(survey.trees[1].species, "ezomatsu");
+  EXPECT_TRUE(survey.trees[1].imputed.species);
+  EXPECT_THAT(survey.warnings, ElementsAre(file.string() + ": column 'species': 1 of 2 values missing; using the "
+                                                           "default species 'ezomatsu'"));
 }
 
 TEST(ReadSurvey, TreesOnThePlotEdgeAreInside) {

@@ -12,8 +12,8 @@ namespace heliostand::testing {
 
 inline std::filesystem::path write_test_file(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / "heliostand_inputs";
-  std::filesystem::create_directories(dir);
   const auto path = dir / name;
+  std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }

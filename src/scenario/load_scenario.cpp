@@ -1,0 +1,117 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_tables.hpp"
+#include "survey/read_survey.hpp"
+
+namespace heliostand {
+
+namespace scenario_detail {
+
+std::span<const TableParserEntry> scenario_table_parsers() {
+  static constexpr std::array<TableParserEntry, 5> parsers{{
+      {"stand", parse_stand},
+      {"run", parse_run},
+      {"species", parse_species},
+      {"light", parse_light},
+      {"thinning", parse_thinning},
+  }};
+  return parsers;
+}
+
+}  // namespace scenario_detail
+
+namespace {
+
+using namespace scenario_detail;
+
+toml::table parse_toml_file(const std::filesystem::path& file, const std::string& label) {
+  std::error_code ec;
+  std::ifstream probe(file);
+  if (std::filesystem::is_directory(file, ec) || !probe) {
+    const std::string reason = std::filesystem::is_directory(file, ec) ? "it is a directory" : std::strerror(errno);
+    throw InputError({{label, 0, "", fmt::format("cannot read the scenario: {}", reason)}}, "key");
+  }
+  try {
+    return toml::parse_file(file.string());
+  } catch (const toml::parse_error& error) {
+    throw InputError({{label, static_cast<int>(error.source().begin.line), "",
+                       fmt::format("not valid TOML: {}", error.description())}},
+                     "key");
+  }
+}
+
+void report_unknown_tables(const toml::table& root, ScenarioProblems& problems) {
+  std::vector<std::string_view> known;
+  for (const auto& entry : scenario_table_parsers()) known.push_back(entry.key);
+  for (auto&& [key, value] : root) {
+    if (std::find(known.begin(), known.end(), key.str()) != known.end()) continue;
+    problems.add(key.source(), std::string(key.str()),
+                 fmt::format("unknown table or key (known: {})", fmt::join(known, ", ")));
+  }
+}
+
+void read_stand_survey(ScenarioDraft& draft, ScenarioProblems& problems) {
+  if (!draft.survey_label) return;
+  Scenario& scenario = draft.scenario;
+  SurveyReadOptions options;
+  if (draft.plot_valid) options.plot = scenario.stand.plot;
+  // A bad stand age is reported already; a stand-in keeps every record from repeating it.
+  options.stand_age_years = draft.age_valid ? scenario.stand.age_at_survey_years : 1;
+  options.species = scenario.species;
+  options.default_species = scenario.stand.default_species.empty() ? draft.default_species_key.value_or("todomatsu")
+                                                                    : scenario.stand.default_species;
+  try {
+    scenario.survey = read_survey(*draft.survey_label, options);
+    scenario.survey.file = scenario.stand.survey_file;
+  } catch (const InputError& error) {
+    problems.merge(error);
+    draft.survey_label.reset();  // unusable for cross-checks
+  }
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::filesystem::path& file) {
+  const std::string label = file.string();
+  const toml::table root = parse_toml_file(file, label);
+
+  ScenarioProblems problems(label);
+  ScenarioDraft draft;
+  draft.base_dir = file.parent_path();
+  draft.scenario.file = std::filesystem::absolute(file).lexically_normal();
+
+  report_unknown_tables(root, problems);
+  for (const auto& entry : scenario_table_parsers()) entry.parse(root.get(entry.key), draft, problems);
+
+  read_stand_survey(draft, problems);
+  if (draft.survey_label && draft.plot_valid) {
+    check_thinning_against_survey(draft, problems);
+  }
+  problems.throw_if_any();
+  return std::move(draft.scenario);
+}
+
+void Scenario::set_years(int years) {
+  std::vector<InputProblem> problems;
+  const std::string label = file.string();
+  if (years < 1) problems.push_back({label, 0, "run.years", fmt::format("--years must be at least 1, got {}", years)});
+  const int final_age = stand.age_at_survey_years + years;
+  for (const auto& event : thinning) {
+    if (event.age_years > final_age) {
+      problems.push_back({label, event.line, "run.years",
+                          fmt::format("--years {} ends the run at stand age {}, before the thinning at age {}", years,
+                                      final_age, event.age_years)});
+    }
+  }
+  if (!problems.empty()) throw InputError(std::move(problems), "key");
+  run.years = years;
+}
+
+}  // namespace heliostand

@@ -1,0 +1,64 @@
+#include <fmt/format.h>
+
+#include <array>
+
+#include "scenario/parameter_fields.hpp"
+#include "scenario/scenario_tables.hpp"
+
+namespace heliostand::scenario_detail {
+
+namespace {
+
+using L = LightParameters;
+
+// Every LightParameters field, with its allowed range.
+const std::array<ParameterField<L>, 13> light_fields{{
+    {"sky_bands", &L::sky_bands, between(2.0, 1024.0)},
+    {"sky_sectors", &L::sky_sectors, between(4.0, 4096.0)},
+    {"intensity_ratio", &L::intensity_ratio, positive()},
+    {"sky_scale", &L::sky_scale, positive()},
+    {"transmittance", &L::transmittance, between(0.0, 1.0)},
+    {"exact", &L::exact},
+    {"cutoff_m", &L::cutoff_m, positive()},
+    {"far_field_cell_m", &L::far_field_cell_m, positive()},
+    {"periodic", &L::periodic},
+    {"plot_x_min", &L::plot_x_min, any_number()},
+    {"plot_y_min", &L::plot_y_min, any_number()},
+    {"plot_x_max", &L::plot_x_max, any_number()},
+    {"plot_y_max", &L::plot_y_max, any_number()},
+}};
+
+}  // namespace
+
+void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
+  LightParameters& light = draft.scenario.light;
+  // The periodic light domain is the surveyed plot unless [light] says otherwise.
+  const PlotBounds& plot = draft.scenario.stand.plot;
+  light.plot_x_min = plot.x_min;
+  light.plot_y_min = plot.y_min;
+  light.plot_x_max = plot.x_max;
+  light.plot_y_max = plot.y_max;
+
+  const toml::table* table = as_table(node, "light", problems);
+  if (!table) return;
+  TomlTableReader reader(*table, "light", problems);
+  read_parameter_fields<L>(reader, light_fields, light);
+  reader.report_unknown_keys();
+
+  // The first V/2 bands are the upper hemisphere: V must split evenly.
+  if (light.sky_bands % 2 != 0) {
+    reader.problem("sky_bands", fmt::format("must be even (the upper hemisphere is the first half), got {}", light.sky_bands));
+  }
+  const bool own_domain = table->contains("plot_x_min") || table->contains("plot_y_min") ||
+                          table->contains("plot_x_max") || table->contains("plot_y_max");
+  if (own_domain && light.plot_x_max <= light.plot_x_min) {
+    reader.problem("plot_x_max", fmt::format("must be greater than plot_x_min ({:g}), got {:g}", light.plot_x_min,
+                                             light.plot_x_max));
+  }
+  if (own_domain && light.plot_y_max <= light.plot_y_min) {
+    reader.problem("plot_y_max", fmt::format("must be greater than plot_y_min ({:g}), got {:g}", light.plot_y_min,
+                                             light.plot_y_max));
+  }
+}
+
+}  // namespace heliostand::scenario_detail

@@ -1,0 +1,35 @@
+#include <fmt/format.h>
+
+#include "scenario/scenario_tables.hpp"
+#include "scenario/toml_table_reader.hpp"
+
+namespace heliostand::scenario_detail {
+
+void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
+  if (!node) {
+    problems.add(0, "run", "required table missing (it gives at least the years to simulate)");
+    return;
+  }
+  const toml::table* table = as_table(node, "run", problems);
+  if (!table) return;
+  TomlTableReader reader(*table, "run", problems);
+  RunSettings& run = draft.scenario.run;
+
+  if (auto years = reader.integer("years", at_least(1), true)) {
+    run.years = static_cast<int>(*years);
+    draft.years_valid = true;
+  }
+  if (auto seed = reader.integer("seed", non_negative())) run.seed = static_cast<std::uint64_t>(*seed);
+  if (auto interval = reader.integer("output_interval", at_least(1))) run.output_interval_years = static_cast<int>(*interval);
+  if (auto device = reader.string("device")) {
+    if (auto choice = parse_device_choice(*device)) {
+      run.device = *choice;
+    } else {
+      reader.problem("device", fmt::format("expected \"auto\", \"reference\", \"opencl\" or \"opencl:N\", got \"{}\"",
+                                           *device));
+    }
+  }
+  reader.report_unknown_keys();
+}
+
+}  // namespace heliostand::scenario_detail

@@ -1,0 +1,122 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+#include "scenario/parameter_fields.hpp"
+#include "scenario/scenario_tables.hpp"
+
+namespace heliostand::scenario_detail {
+
+namespace {
+
+using S = SpeciesParameters;
+
+// Every SpeciesParameters field except `name` (which is the table's key), with its allowed range.
+const std::array<ParameterField<S>, 31> species_fields{{
+    {"site_asymptote_m", &S::site_asymptote_m, positive()},
+    {"height_k", &S::height_k, positive()},
+    {"height_m", &S::height_m, {0.0, 1.0, false, true}},  // p = 1/(1-m) needs m < 1
+    {"stem_a_in_crown", &S::stem_a_in_crown, positive()},
+    {"stem_b_in_crown", &S::stem_b_in_crown, positive()},
+    {"stem_a_below_crown", &S::stem_a_below_crown, positive()},
+    {"stem_b_below_crown", &S::stem_b_below_crown, positive()},
+    {"crown_shape_ratio", &S::crown_shape_ratio, positive()},
+    {"whorl_a3", &S::whorl_a3, any_number()},
+    {"whorl_b3", &S::whorl_b3, any_number()},
+    {"initial_branch_angle_deg", &S::initial_branch_angle_deg, {0.0, 180.0, true, true}},
+    {"final_branch_angle_deg", &S::final_branch_angle_deg, {0.0, 180.0, true, true}},
+    {"lifespan_years", &S::lifespan_years, positive()},
+    {"annual_droop_deg", &S::annual_droop_deg, non_negative()},
+    {"elongation_alpha", &S::elongation_alpha, positive()},
+    {"initial_crown_angle_deg", &S::initial_crown_angle_deg, {0.0, 90.0, true, true}},
+    {"crown_angle_beta", &S::crown_angle_beta, non_negative()},
+    {"branch_a11", &S::branch_a11, positive()},
+    {"branch_b11", &S::branch_b11, positive()},
+    {"growth_stop_years_first_order", &S::growth_stop_years_first_order, positive()},
+    {"activity", &S::activity, any_number()},
+    {"dead_branch_attached_years", &S::dead_branch_attached_years, positive()},
+    {"second_order_elongation_ratio", &S::second_order_elongation_ratio, non_negative()},
+    {"second_order_branch_angle_deg", &S::second_order_branch_angle_deg, {0.0, 180.0, true, true}},
+    {"min_parent_length_m", &S::min_parent_length_m, non_negative()},
+    {"first_order_upward_offset_deg", &S::first_order_upward_offset_deg, between(-90.0, 90.0)},
+    {"second_order_jitter_deg", &S::second_order_jitter_deg, between(0.0, 90.0)},
+    {"max_order", &S::max_order, between(1.0, 10.0)},
+    {"leaf_ball_radius_ratio", &S::leaf_ball_radius_ratio, positive()},
+    {"leaf_ball_min_radius_m", &S::leaf_ball_min_radius_m, positive()},
+    {"leaf_ball_max_radius_m", &S::leaf_ball_max_radius_m, positive()},
+}};
+
+std::span<const ParameterField<S>> fields() { return species_fields; }
+
+// Relations between fields that single ranges cannot express.
+void check_consistency(TomlTableReader& reader, const SpeciesParameters& species) {
+  const double branches_per_whorl = species.whorl_a3 * species.crown_shape_ratio + species.whorl_b3;
+  if (branches_per_whorl < 1.0) {
+    reader.problems().add(reader.line(), reader.key_path("whorl_b3"),
+                          fmt::format("first-order branches per whorl a3 x + b3 = {:g} (eq. 3) must be at least 1",
+                                      branches_per_whorl));
+  }
+  if (species.leaf_ball_max_radius_m < species.leaf_ball_min_radius_m) {
+    reader.problem("leaf_ball_max_radius_m", fmt::format("must not be below leaf_ball_min_radius_m ({:g}), got {:g}",
+                                                         species.leaf_ball_min_radius_m, species.leaf_ball_max_radius_m));
+  }
+  if (species.final_branch_angle_deg < species.initial_branch_angle_deg) {
+    reader.problem("final_branch_angle_deg", fmt::format("must not be below initial_branch_angle_deg ({:g}), got {:g}",
+                                                         species.initial_branch_angle_deg, species.final_branch_angle_deg));
+  }
+}
+
+void resolve_default_species(ScenarioDraft& draft, ScenarioProblems& problems) {
+  auto& species = draft.scenario.species;
+  if (species.empty()) {
+    // No [species] tables: the stand is Todomatsu with the seed-001 defaults.
+    species.emplace("todomatsu", SpeciesParameters{});
+    draft.species_order.emplace_back("todomatsu", 0);
+  }
+  if (draft.default_species_key) {
+    if (species.count(*draft.default_species_key)) {
+      draft.scenario.stand.default_species = *draft.default_species_key;
+    } else {
+      std::vector<std::string> names;
+      for (const auto& [name, _] : species) names.push_back(name);
+      problems.add(draft.default_species_line, "stand.default_species",
+                   fmt::format("\"{}\" is not a defined species (defined: {})", *draft.default_species_key,
+                               fmt::join(names, ", ")));
+    }
+    return;
+  }
+  // The first [species.NAME] table in the file (toml++ keeps tables sorted by name, so use lines).
+  const auto first = std::min_element(draft.species_order.begin(), draft.species_order.end(),
+                                      [](const auto& a, const auto& b) { return a.second < b.second; });
+  draft.scenario.stand.default_species = first->first;
+}
+
+}  // namespace
+
+void parse_species(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
+  if (const toml::table* table = as_table(node, "species", problems)) {
+    for (auto&& [key, value] : *table) {
+      const std::string name(key.str());
+      const std::string path = "species." + name;
+      const toml::table* parameters = value.as_table();
+      if (!parameters) {
+        problems.add(key.source(), path,
+                     fmt::format("expected a table of species parameters ([species.NAME]), got {}",
+                                 toml_type_phrase(value)));
+        continue;
+      }
+      SpeciesParameters species;
+      species.name = name;
+      TomlTableReader reader(*parameters, path, problems);
+      read_parameter_fields<S>(reader, fields(), species);
+      reader.report_unknown_keys();
+      check_consistency(reader, species);
+      draft.scenario.species.emplace(name, species);
+      draft.species_order.emplace_back(name, static_cast<int>(parameters->source().begin.line));
+    }
+  }
+  resolve_default_species(draft, problems);
+}
+
+}  // namespace heliostand::scenario_detail

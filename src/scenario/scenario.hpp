@@ -1,0 +1,56 @@
+#pragma once
+// A scenario: which stand to grow, for how long, with which species and light parameters, and which
+// thinnings — everything resolved and checked (docs/formats.md, "Scenario TOML").
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "architecture/species.hpp"
+#include "light/light_parameters.hpp"
+#include "scenario/device_choice.hpp"
+#include "scenario/thinning_event.hpp"
+#include "survey/plot_bounds.hpp"
+#include "survey/survey.hpp"
+
+namespace heliostand {
+
+struct StandSettings {
+  std::filesystem::path survey_file;  // absolute
+  int age_at_survey_years = 0;
+  PlotBounds plot;
+  std::string default_species;        // species of survey records that name none
+};
+
+struct RunSettings {
+  int years = 0;                      // years to simulate after the survey
+  std::uint64_t seed = 1;
+  int output_interval_years = 1;      // write the stand every this many years (and at the start and end)
+  DeviceChoice device;
+};
+
+struct Scenario {
+  std::filesystem::path file;  // absolute
+  StandSettings stand;
+  RunSettings run;
+  std::map<std::string, SpeciesParameters> species;  // by name; SpeciesParameters::name = the key
+  LightParameters light;
+  std::vector<ThinningEvent> thinning;  // sorted by age (file order among equal ages)
+  Survey survey;                        // read, checked and imputed; its warnings are for the caller to log
+
+  double plot_area_ha() const { return stand.plot.area_ha(); }
+  int final_age_years() const { return stand.age_at_survey_years + run.years; }
+  const SpeciesParameters& species_of(const SurveyRecord& tree) const { return species.at(tree.species); }
+
+  // Command-line overrides (--years, --seed). A shorter run must still contain every thinning: otherwise
+  // InputError naming the thinning's line and key 'run.years'.
+  void set_years(int years);
+  void set_seed(std::uint64_t seed) { run.seed = seed; }
+};
+
+// Parses the scenario, reads its survey, and checks them against each other. Throws InputError
+// (field kind "key"; survey problems keep "column") listing every problem found.
+Scenario load_scenario(const std::filesystem::path& file);
+
+}  // namespace heliostand

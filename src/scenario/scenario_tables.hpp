@@ -1,0 +1,63 @@
+#pragma once
+// One parse function per top-level scenario table. Each gets the table's node (null when the file has
+// none, so it can report missing required keys), fills its part of the draft and reports problems.
+// A new table (roots, hollows, ...) is a new function here and one line in scenario_table_parsers().
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+#include "architecture/species.hpp"
+#include "light/light_parameters.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/scenario_problems.hpp"
+
+namespace heliostand::scenario_detail {
+
+// A scenario being assembled: what has been read so far, and what was valid enough to check others against.
+struct ScenarioDraft {
+  Scenario scenario;
+  std::filesystem::path base_dir;           // the scenario file's folder: relative paths start here
+  std::optional<std::string> survey_label;  // survey path as shown in messages (base_dir / value)
+  int survey_key_line = 0;
+  bool age_valid = false;
+  bool plot_valid = false;
+  bool years_valid = false;
+  std::optional<std::string> default_species_key;  // stand.default_species as written
+  int default_species_line = 0;
+  std::vector<std::pair<std::string, int>> species_order;  // names in file order, with their lines
+  // Per thinning event (same order as scenario.thinning, file order): where its ids / target were written.
+  struct ThinningKeys {
+    std::string path;  // "thinning[2]"
+    int ids_line = 0;
+    int target_line = 0;
+  };
+  std::vector<ThinningKeys> thinning_keys;
+};
+
+using TableParser = void (*)(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+
+struct TableParserEntry {
+  std::string_view key;
+  TableParser parse;
+};
+
+void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_species(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+
+// After the survey is read: thinning ids exist and are removed once; stem targets fall over time. Then
+// sorts the events by age.
+void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& problems);
+
+// In the order they run: later tables may use what earlier ones resolved (light uses the stand's plot).
+std::span<const TableParserEntry> scenario_table_parsers();
+
+// The table at `node`, or null after reporting that `key` should be a table.
+const toml::table* as_table(const toml::node* node, std::string_view key, ScenarioProblems& problems);
+
+}  // namespace heliostand::scenario_detail

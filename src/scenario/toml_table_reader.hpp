@@ -1,0 +1,65 @@
+#pragma once
+// Typed, range-checked reading of one TOML table. Every key the parser asks for is remembered, so that
+// afterwards every other key can be reported as unknown (a misspelt key must not silently do nothing).
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+#include "scenario/scenario_problems.hpp"
+
+namespace heliostand {
+
+// An allowed interval, e.g. {0, {}, true} = "> 0"; both ends optional.
+struct NumberRange {
+  std::optional<double> min, max;
+  bool min_exclusive = false, max_exclusive = false;
+
+  bool contains(double value) const;
+  std::string describe(std::string_view what) const;  // "a number > 0", "an integer in [1, 10]"
+};
+
+inline NumberRange positive() { return {0.0, std::nullopt, true, false}; }
+inline NumberRange non_negative() { return {0.0, std::nullopt, false, false}; }
+inline NumberRange at_least(double min) { return {min, std::nullopt, false, false}; }
+inline NumberRange between(double min, double max) { return {min, max, false, false}; }
+inline NumberRange any_number() { return {}; }
+
+// "a string", "an integer", ... for messages about wrong types.
+std::string toml_type_phrase(const toml::node& node);
+
+class TomlTableReader {
+ public:
+  // `path` is the key path of the table ("species.todomatsu", "thinning[2]"); `line` where it starts.
+  TomlTableReader(const toml::table& table, std::string path, ScenarioProblems& problems);
+
+  std::optional<double> number(std::string_view key, NumberRange range, bool required = false);
+  std::optional<std::int64_t> integer(std::string_view key, NumberRange range, bool required = false);
+  std::optional<bool> boolean(std::string_view key, bool required = false);
+  std::optional<std::string> string(std::string_view key, bool required = false);
+  // The raw node (or null), marked as known; for values the caller checks itself.
+  const toml::node* node(std::string_view key);
+
+  // Reports every key no accessor asked for. Call once, after reading.
+  void report_unknown_keys();
+
+  std::string key_path(std::string_view key) const;
+  int line() const { return static_cast<int>(table_.source().begin.line); }
+  int line_of(std::string_view key) const;
+  const toml::table& table() const { return table_; }
+  ScenarioProblems& problems() { return problems_; }
+  void problem(std::string_view key, std::string reason);
+
+ private:
+  const toml::node* lookup(std::string_view key, bool required);
+
+  const toml::table& table_;
+  std::string path_;
+  ScenarioProblems& problems_;
+  std::set<std::string, std::less<>> known_;
+};
+
+}  // namespace heliostand
