@@ -2,6 +2,8 @@
 // The light field of seed 000 (Kanamaru et al.): for every leaf ball, the sky light that reaches it
 // through all other leaf balls of the stand, and the direction it comes from. Two implementations
 // (the OpenMM pattern): ReferenceLightSolver, the plain C++ oracle, and OpenCLLightSolver, the default.
+// make_light_solver() (light/make_light_solver.hpp) picks one from a --device string.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -15,7 +17,16 @@ namespace heliostand {
 
 struct LightSample {
   double light = 1.0;                 // Σ B S / Σ B0 S, in 0..1
-  glm::dvec3 vector{0.0, 0.0, 1.0};   // normalize(Σ N B S)
+  // normalize(Σ N B S). When the light is balanced so that |Σ N B S| <= 1e-5 Σ B0 S (e.g. a lone ball
+  // with C1 = C2) there is no preferred direction and the vector is (0, 0, 0): heliotropism does nothing.
+  glm::dvec3 vector{0.0, 0.0, 1.0};
+};
+
+// What the last solve cost, for benchmarks and logs (wall-clock seconds).
+struct LightSolveStatistics {
+  double setup_seconds = 0;       // k-d tree, candidate lists, far-field grid (culled mode); 0 in exact mode
+  double evaluate_seconds = 0;    // the per-ball shading itself (incl. device transfers)
+  double mean_candidates = 0;     // near-field occluders per ball (culled) or all other balls (exact)
 };
 
 class LightSolver {
@@ -23,7 +34,15 @@ class LightSolver {
   virtual ~LightSolver() = default;
   virtual std::string name() const = 0;  // "reference" or "opencl:<device>"
   // One sample per ball, in the order given.
-  virtual std::vector<LightSample> solve(std::span<const LeafBall> balls) = 0;
+  std::vector<LightSample> solve(std::span<const LeafBall> balls);
+  // Samples for the balls listed in `receivers` only (indices into `balls`), shaded by all `balls`.
+  // Used to check or time a large stand on a subsample.
+  virtual std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
+                                             std::span<const std::uint32_t> receivers) = 0;
+  const LightSolveStatistics& last_statistics() const { return statistics_; }
+
+ protected:
+  LightSolveStatistics statistics_;
 };
 
 }  // namespace heliostand

@@ -1,0 +1,38 @@
+#include "compute/device_choice.hpp"
+
+#include <charconv>
+#include <stdexcept>
+
+namespace heliostand::compute {
+
+DeviceChoice DeviceChoice::parse(const std::string& text) {
+  DeviceChoice choice;
+  if (text == "auto" || text.empty()) return choice;
+  if (text == "reference") {
+    choice.kind = Kind::reference;
+    return choice;
+  }
+  if (text == "opencl") {
+    choice.kind = Kind::opencl;
+    return choice;
+  }
+  const std::string prefix = "opencl:";
+  if (text.rfind(prefix, 0) == 0) {
+    int index = -1;
+    const char* first = text.data() + prefix.size();
+    const char* last = text.data() + text.size();
+    const auto [end, error] = std::from_chars(first, last, index);
+    if (error == std::errc() && end == last && first != last && index >= 0) {
+      choice.kind = Kind::opencl;
+      choice.opencl_index = index;
+      return choice;
+    }
+  }
+  throw std::invalid_argument("device '" + text + "': expected auto, reference, opencl or opencl:N (N >= 0)");
+}
+
+#ifndef HELIOSTAND_HAVE_OPENCL
+std::vector<OpenCLDeviceInfo> list_opencl_devices() { return {}; }
+#endif
+
+}  // namespace heliostand::compute

@@ -1,0 +1,36 @@
+#pragma once
+// Which compute backend runs the light (and root) fields: the --device option.
+//   auto       first OpenCL device; no OpenCL platform -> warn once, use the reference solver
+//   reference  the plain C++ oracle
+//   opencl     first OpenCL device; none -> error
+//   opencl:N   OpenCL device N in `heliostand devices` numbering; missing -> error
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace heliostand::compute {
+
+struct DeviceChoice {
+  enum class Kind { automatic, reference, opencl };
+  Kind kind = Kind::automatic;
+  std::optional<int> opencl_index;  // only with Kind::opencl
+
+  // Throws std::invalid_argument ("device 'x': expected auto, reference, opencl or opencl:N").
+  static DeviceChoice parse(const std::string& text);
+};
+
+struct OpenCLDeviceInfo {
+  int index = 0;            // across all platforms, in enumeration order
+  std::string platform;
+  std::string name;
+  std::string type;         // "CPU", "GPU", "accelerator", ...
+  std::string version;      // OpenCL version string of the device
+  unsigned compute_units = 0;
+  bool is_default = false;  // the one `auto` and `opencl` pick
+};
+
+// Every OpenCL device of every platform; empty when there is no OpenCL platform (clGetPlatformIDs -> -1001)
+// or when the build has no OpenCL.
+std::vector<OpenCLDeviceInfo> list_opencl_devices();
+
+}  // namespace heliostand::compute

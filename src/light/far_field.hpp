@@ -1,0 +1,51 @@
+#pragma once
+// The far field: occluders beyond the near-field cut-off, seen as a smooth density of leaf-ball
+// cross-section on a coarse voxel grid. Each cell holds sigma = sum(pi r^2) / cell volume (1/m): the expected
+// number of balls a ray hits per metre. For every cell centre and every sky patch, a table holds the optical
+// depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
+// ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
+// balls with mean K = tau. Both solvers read the same table (double on the host, float on the device).
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "light/celestial_sphere.hpp"
+#include "light/occluders.hpp"
+
+namespace heliostand {
+
+struct VoxelGrid {
+  glm::dvec3 origin{0.0};   // corner of cell (0,0,0), m
+  glm::dvec3 cell{1.0};     // cell edge per axis, m (x/y adjusted so a periodic plot holds whole cells)
+  glm::ivec3 dims{1};
+  bool periodic = false;    // x and y wrap (torus); z never wraps
+  std::size_t cell_count() const { return std::size_t(dims.x) * dims.y * dims.z; }
+  std::size_t index(int x, int y, int z) const { return (std::size_t(z) * dims.y + y) * dims.x + x; }
+  glm::dvec3 centre(int x, int y, int z) const { return origin + (glm::dvec3(x, y, z) + 0.5) * cell; }
+  bool outside(const glm::dvec3& point) const;  // beyond the grid: no more leaf balls along a ray
+  // Trilinear interpolation between cell-centre values (clamped at the faces, wrapped in x/y when periodic);
+  // 0 outside the grid.
+  double sample(std::span<const double> values, const glm::dvec3& point) const;
+};
+
+class FarField {
+ public:
+  FarField(const OccluderSet& occluders, const LightParameters& parameters, const CelestialSphere& sky);
+
+  const VoxelGrid& grid() const { return grid_; }
+  const std::vector<double>& density() const { return density_; }         // sigma per cell, 1/m
+  const std::vector<double>& optical_depth() const { return depth_; }     // [patch][cell]
+  // Expected number of ball hits along patch `patch`'s direction from `point` outward.
+  double optical_depth(const glm::dvec3& point, int patch) const;
+  // tau integrated directly from the density (what the table approximates); used by the table and by tests.
+  double march(const glm::dvec3& point, const glm::dvec3& direction) const;
+
+ private:
+  VoxelGrid grid_;
+  double max_path_m_;
+  std::vector<double> density_;
+  std::vector<double> depth_;
+};
+
+}  // namespace heliostand

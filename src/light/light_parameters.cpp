@@ -1,0 +1,31 @@
+#include "light/light_parameters.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace heliostand {
+namespace {
+
+void require(bool ok, const char* field, const std::string& reason) {
+  if (!ok) throw std::invalid_argument(std::string("light.") + field + ": " + reason);
+}
+
+}  // namespace
+
+void validate(const LightParameters& p) {
+  require(p.sky_bands >= 2 && p.sky_bands <= 64 && p.sky_bands % 2 == 0, "sky_bands",
+          "expected an even number in 2..64, got " + std::to_string(p.sky_bands));
+  require(p.sky_sectors >= 1 && p.sky_sectors <= 128, "sky_sectors",
+          "expected a number in 1..128, got " + std::to_string(p.sky_sectors));
+  require(p.intensity_ratio > 0, "intensity_ratio", "expected a number > 0");
+  require(p.sky_scale > 0, "sky_scale", "expected a number > 0");
+  require(p.transmittance > 0 && p.transmittance <= 1, "transmittance", "expected a number in (0, 1]");
+  require(p.cutoff_m > 0, "cutoff_m", "expected a distance > 0 m");
+  require(p.far_field_cell_m > 0, "far_field_cell_m", "expected a distance > 0 m");
+  if (p.periodic) {
+    require(p.plot_x_max > p.plot_x_min, "plot_x_max", "periodic edges need plot_x_max > plot_x_min");
+    require(p.plot_y_max > p.plot_y_min, "plot_y_max", "periodic edges need plot_y_max > plot_y_min");
+  }
+}
+
+}  // namespace heliostand

@@ -1,0 +1,22 @@
+#pragma once
+// The oracle: plain double-precision C++, one receiving ball at a time, every sky patch tested against
+// every occluder with seed 000's ray test. Exact mode tests every other ball of the stand (and, periodic,
+// its images in the 8 neighbouring copies of the plot); culled mode tests the FLANN near-field candidates
+// and multiplies in the far-field attenuation.
+#include "light/light_parameters.hpp"
+#include "light/light_solver.hpp"
+
+namespace heliostand {
+
+class ReferenceLightSolver final : public LightSolver {
+ public:
+  explicit ReferenceLightSolver(const LightParameters& parameters);
+  std::string name() const override { return "reference"; }
+  std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
+                                     std::span<const std::uint32_t> receivers) override;
+
+ private:
+  LightParameters parameters_;
+};
+
+}  // namespace heliostand

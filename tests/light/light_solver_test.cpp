@@ -1,0 +1,219 @@
+// One test body, run against both light solvers (reference and OpenCL) in exact and culled mode:
+// the OpenMM pattern of shared platform tests.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+
+#include "light/celestial_sphere.hpp"
+#include "light/opencl_light_solver.hpp"
+#include "light/reference_light_solver.hpp"
+#include "light_test_stands.hpp"
+
+namespace heliostand {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+enum class Backend { reference, opencl };
+enum class Mode { exact, culled };
+
+std::unique_ptr<LightSolver> make_solver(Backend backend, const LightParameters& p) {
+  if (backend == Backend::reference) return std::make_unique<ReferenceLightSolver>(p);
+  return std::make_unique<OpenCLLightSolver>(p, std::nullopt);
+}
+
+class LightSolverTest : public ::testing::TestWithParam<std::tuple<Backend, Mode>> {
+ protected:
+  void SetUp() override {
+    if (backend() == Backend::opencl && !opencl_available()) GTEST_SKIP() << "no OpenCL device";
+  }
+  Backend backend() const { return std::get<0>(GetParam()); }
+  // Culled mode with a cut-off beyond the test scenes: every occluder is near field, the far field is empty,
+  // so the hand-computed answers hold for both modes.
+  LightParameters parameters() const {
+    LightParameters p;
+    p.exact = std::get<1>(GetParam()) == Mode::exact;
+    p.cutoff_m = 100.0;
+    return p;
+  }
+  std::vector<LightSample> solve(const LightParameters& p, const std::vector<LeafBall>& balls) {
+    return make_solver(backend(), p)->solve(balls);
+  }
+};
+
+// Solid angle of band v, written out independently of CelestialSphere.
+double band_solid_angle(int v, int bands, int sectors) {
+  return 2.0 * pi / sectors * (std::cos(v * pi / bands) - std::cos((v + 1) * pi / bands));
+}
+
+TEST_P(LightSolverTest, LoneBallSeesTheWholeSkyAndLightComesFromTheBrighterHemisphere) {
+  LightParameters p = parameters();
+  const std::vector<LeafBall> balls{{{1, 2, 3}, 0.5}};
+  p.intensity_ratio = 1.5;  // C1 > C2: brighter sky above
+  auto samples = solve(p, balls);
+  ASSERT_EQ(samples.size(), 1u);
+  EXPECT_NEAR(samples[0].light, 1.0, 1e-6);
+  EXPECT_NEAR(samples[0].vector.z, 1.0, 1e-6);
+  p.intensity_ratio = 1.0 / 1.5;  // brighter ground reflection than sky: light comes from below
+  samples = solve(p, balls);
+  EXPECT_NEAR(samples[0].light, 1.0, 1e-6);
+  EXPECT_NEAR(samples[0].vector.z, -1.0, 1e-6);
+  p.intensity_ratio = 1.0;  // C1 = C2: balanced, no preferred direction
+  samples = solve(p, balls);
+  EXPECT_NEAR(glm::length(samples[0].vector), 0.0, 1e-12);
+}
+
+TEST_P(LightSolverTest, BallInsideOneOccluderGetsTAndInsideTwoGetsTSquared) {
+  LightParameters p = parameters();
+  p.transmittance = 0.3;
+  // receiver 0 inside ball 1; receiver 2 inside balls 1 and 3
+  const std::vector<LeafBall> balls{{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 1.0}, {{0.5, 0, 0}, 0.1}, {{0.6, 0, 0}, 0.5}};
+  const auto samples = solve(p, balls);
+  // ball 0 is inside ball 1 only (ball 3 reaches 0.1 from it); all other balls are seen only in some patches,
+  // so compare receiver 0 against an all-shaded sky times what balls 2 and 3 add.
+  EXPECT_LE(samples[0].light, 0.3 + 1e-6);
+  // Receiver 2 sits inside balls 1 and 3: every patch carries t^2 at least.
+  EXPECT_LE(samples[2].light, 0.09 + 1e-6);
+  // A lone pair: receiver inside its only occluder gets exactly t, and keeps the unshaded direction.
+  const std::vector<LeafBall> pair{{{0, 0, 0}, 0.1}, {{0.3, 0.1, -0.2}, 2.0}};
+  const auto enclosed = solve(p, pair);
+  EXPECT_NEAR(enclosed[0].light, 0.3, 1e-6);
+  EXPECT_NEAR(enclosed[0].vector.z, 1.0, 1e-6);
+}
+
+TEST_P(LightSolverTest, OccluderStraightAboveShadesExactlyTheBandsWithinItsAngularRadius) {
+  LightParameters p = parameters();
+  p.transmittance = 0.5;
+  // angular radius asin(r / z) = 20 deg: band centres 5.625 and 16.875 deg are inside, 28.125 is not
+  const double z = 5.0, r = z * std::sin(20.0 * pi / 180.0);
+  const std::vector<LeafBall> balls{{{0, 0, 0}, 0.1}, {{0, 0, z}, r}};
+  const auto samples = solve(p, balls);
+  const int V = p.sky_bands, H = p.sky_sectors;
+  const double c1 = 1.0, c2 = 1.0 / p.intensity_ratio;
+  double total = 0, upper_z = 0, lower_z = 0, lost = 0, lost_z = 0;
+  for (int v = 0; v < V; ++v) {
+    const double s = band_solid_angle(v, V, H) * H, cos_centre = std::cos((v + 0.5) * pi / V);
+    total += (v < V / 2 ? c1 : c2) * s;
+    (v < V / 2 ? upper_z : lower_z) += (v < V / 2 ? c1 : c2) * s * cos_centre;
+    if (v < 2) lost += 0.5 * c1 * s, lost_z += 0.5 * c1 * s * cos_centre;
+  }
+  EXPECT_NEAR(samples[0].light, (total - lost) / total, 1e-6);
+  // shading is symmetric about the vertical axis: the vector stays vertical, pointing to the net excess
+  const double net_z = upper_z + lower_z - lost_z;
+  EXPECT_NEAR(samples[0].vector.x, 0.0, 1e-6);
+  EXPECT_NEAR(samples[0].vector.y, 0.0, 1e-6);
+  EXPECT_NEAR(samples[0].vector.z, net_z > 0 ? 1.0 : -1.0, 1e-6);
+  // the occluder itself looks down at a small receiver: it loses a sliver of its lower sky at most
+  EXPECT_GT(samples[1].light, 0.99);
+}
+
+TEST_P(LightSolverTest, OccluderOffAxisShadesThePatchesCountedByAngle) {
+  LightParameters p = parameters();
+  p.transmittance = 0.25;
+  // An occluder at polar angle 50 deg, azimuth 30 deg, angular radius 12 deg. Count by angle between the
+  // patch centre and the occluder direction (a different test from the solvers' ray-sphere one).
+  const double polar = 50 * pi / 180, azimuth = 30 * pi / 180, alpha = 12 * pi / 180, dist = 4.0;
+  const glm::dvec3 u{std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)};
+  const std::vector<LeafBall> balls{{{0, 0, 0}, 0.2}, {dist * u, dist * std::sin(alpha)}};
+  const int V = p.sky_bands, H = p.sky_sectors;
+  double total = 0, received = 0;
+  glm::dvec3 flux(0.0);
+  int shaded = 0;
+  for (int v = 0; v < V; ++v)
+    for (int h = 0; h < H; ++h) {
+      const double th = (v + 0.5) * pi / V, ph = (h + 0.5) * 2 * pi / H;
+      const glm::dvec3 n{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+      const double b0 = (v < V / 2 ? 1.0 : 1.0 / p.intensity_ratio) * band_solid_angle(v, V, H);
+      const bool hit = std::acos(glm::dot(n, u)) <= alpha;
+      shaded += hit;
+      total += b0;
+      received += hit ? 0.25 * b0 : b0;
+      flux += n * (hit ? 0.25 * b0 : b0);
+    }
+  ASSERT_GT(shaded, 4);  // the scene really shades several patches
+  const auto samples = solve(p, balls);
+  EXPECT_NEAR(samples[0].light, received / total, 1e-6);
+  EXPECT_NEAR(glm::dot(samples[0].vector, glm::normalize(flux)), 1.0, 1e-7);  // float on the device
+  // light now comes from away from the occluder
+  EXPECT_LT(samples[0].vector.x, 0.0);
+}
+
+TEST_P(LightSolverTest, RingOfOccludersLeavesTheLightVectorVertical) {
+  LightParameters p = parameters();
+  p.intensity_ratio = 0.8;  // stronger light from below, so the ring matters for the sign too
+  std::vector<LeafBall> balls{{{0, 0, 0}, 0.1}};
+  for (int k = 0; k < 8; ++k) {  // 8 balls, 45 deg apart: the 32 sectors map onto each other
+    const double a = k * pi / 4;
+    balls.push_back({{2 * std::cos(a), 2 * std::sin(a), 1.0}, 0.6});
+  }
+  const auto samples = solve(p, balls);
+  EXPECT_LT(samples[0].light, 0.999);
+  EXPECT_NEAR(samples[0].vector.x, 0.0, 1e-6);
+  EXPECT_NEAR(samples[0].vector.y, 0.0, 1e-6);
+  EXPECT_NEAR(std::abs(samples[0].vector.z), 1.0, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, LightSolverTest,
+                         ::testing::Combine(::testing::Values(Backend::reference, Backend::opencl),
+                                            ::testing::Values(Mode::exact, Mode::culled)),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param) == Backend::reference ? "Reference" : "OpenCL") +
+                                  (std::get<1>(info.param) == Mode::exact ? "Exact" : "Culled");
+                         });
+
+// ---- OpenCL against the reference on random stands ----------------------------------------------------
+
+struct EquivalenceCase {
+  bool exact;
+  bool periodic;
+};
+
+class LightEquivalenceTest : public ::testing::TestWithParam<EquivalenceCase> {};
+
+double angle_degrees(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * 180.0 / pi;
+}
+
+TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
+  if (!opencl_available()) GTEST_SKIP() << "no OpenCL device";
+  LightParameters p;
+  p.exact = GetParam().exact;
+  p.periodic = GetParam().periodic;
+  const double size = 6.0;
+  p.plot_x_max = p.plot_y_max = size;
+  p.cutoff_m = 2.0;          // a real split: many occluders near, many far
+  p.far_field_cell_m = 1.0;
+  p.transmittance = 0.6;
+  const CelestialSphere sky(p);
+  for (std::uint64_t seed : {1u, 2u}) {
+    const auto balls = testing::random_stand(120, size, 0.2, 0.7, seed, sky, p.periodic);
+    ReferenceLightSolver reference(p);
+    OpenCLLightSolver opencl(p, std::nullopt);
+    const auto expected = reference.solve(balls);
+    const auto actual = opencl.solve(balls);
+    ASSERT_EQ(actual.size(), balls.size());
+    double lowest = 1;
+    for (std::size_t k = 0; k < balls.size(); ++k) {
+      lowest = std::min(lowest, expected[k].light);
+      EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4) << "ball " << k << " seed " << seed;
+      EXPECT_LT(angle_degrees(actual[k].vector, expected[k].vector), 0.1) << "ball " << k << " seed " << seed;
+    }
+    EXPECT_LT(lowest, 0.5);  // the stand really is dense enough to shade
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, LightEquivalenceTest,
+                         ::testing::Values(EquivalenceCase{true, false}, EquivalenceCase{false, false},
+                                           EquivalenceCase{true, true}, EquivalenceCase{false, true}),
+                         [](const auto& info) {
+                           return std::string(info.param.exact ? "Exact" : "Culled") +
+                                  (info.param.periodic ? "Periodic" : "Open");
+                         });
+
+}  // namespace
+}  // namespace heliostand
