@@ -38,8 +38,8 @@ int run(int argc, char** argv) {
   int status = 0;
   add_check_command(app, status);
   add_grow_command(app, status);
-  add_devices_command(app, status);
-  add_bench_command(app, status);
+  // add_devices_command(app, status);
+  // add_bench_command(app, status);
 
   app.parse_complete_callback([&] { set_up_logging(quiet ? -1 : verbose); });
   try {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace heliostand {
+#include "scenario/thinning_event.hpp"  // ThinningMethod
 
-enum class ThinningMethod { ids, from_below, from_above };
+namespace heliostand {
 
 struct ThinningRule {
   ThinningMethod method = ThinningMethod::from_below;

@@ -1,0 +1,47 @@
+#pragma once
+// Runs the heliostand executable the way a user does, capturing exit status and stderr.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace heliostand::testing {
+
+struct CliResult {
+  int status = -1;
+  std::string output;  // stdout and stderr together
+};
+
+inline CliResult run_cli(const std::string& arguments) {
+  const std::string command = std::string(HELIOSTAND_EXECUTABLE) + " " + arguments + " 2>&1";
+  CliResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) result.output += buffer;
+  const int raw = ::pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return result;
+}
+
+inline std::filesystem::path source_path(const std::string& relative) {
+  return std::filesystem::path(HELIOSTAND_SOURCE_DIR) / relative;
+}
+
+// A fresh, empty folder under the build tree for one test's output.
+inline std::filesystem::path scratch_folder(const std::string& name) {
+  const auto path = std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / name;
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path.parent_path());
+  return path;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace heliostand::testing
