@@ -12,6 +12,7 @@
 #include "architecture/branch_diameter.hpp"
 #include "architecture/elongation.hpp"
 #include "architecture/height_curve.hpp"
+#include "architecture/lower_order_branching.hpp"
 #include "architecture/stem_taper.hpp"
 #include "geometry/angles.hpp"
 
@@ -121,6 +122,37 @@ TEST(ConiferTree, SecondOrderPairsFlushAtLastYearsTipWithLinearElongation) {
     ++pairs;
   }
   EXPECT_GT(pairs, 20);
+}
+
+TEST(ConiferTree, ThirdOrderBudsFlushAtTheTableRateOfTheirParentShoot) {
+  SpeciesParameters species;
+  species.activity = -5.0;           // S2 = 13, S3 = 8: third order grows
+  species.min_parent_length_m = 0.0;  // the table alone decides
+  TreeCalibration calibration;
+  calibration.elongation_scale = 0.6;  // second-order shoots of 2-7 cm: the table's uncertain rows
+  double expected = 0.0, variance = 0.0;
+  int flushed = 0, uncertain_events = 0;
+  for (int id = 0; id < 6; ++id) {
+    ConiferTree tree(species, calibration, {}, 77, id);
+    tree.grow_to_age(12);
+    std::map<int, int> thirds_on;  // bearing shoot → third-order laterals on it
+    for (const BranchAxis& axis : tree.axes())
+      if (axis.order == 3) ++thirds_on[tree.shoots()[axis.shoots.front()].parent];
+    for (const BranchAxis& axis : tree.axes()) {
+      if (axis.order != 2) continue;
+      // Every shoot but the newest bore a pair attempt the year after it flushed (the axis grew on).
+      for (std::size_t k = 0; k + 1 < axis.shoots.size(); ++k) {
+        const Shoot& bearing = tree.shoots()[axis.shoots[k]];
+        const double p = lateral_occurrence_probability(species, 3, glm::length(bearing.tip - bearing.base));
+        expected += 2.0 * p;
+        variance += 2.0 * p * (1.0 - p);
+        if (p > 0.0 && p < 1.0) ++uncertain_events;
+        flushed += thirds_on[axis.shoots[k]];
+      }
+    }
+  }
+  ASSERT_GT(uncertain_events, 200);
+  EXPECT_NEAR(flushed, expected, 4.0 * std::sqrt(variance)) << "expected " << expected << " ± " << std::sqrt(variance);
 }
 
 TEST(ConiferTree, LowerBranchesStopDieAndFallSoTheCrownBaseRises) {
