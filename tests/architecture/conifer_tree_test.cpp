@@ -224,6 +224,9 @@ TEST(ConiferTree, LeafBallsOnRecentLivingShootsWithClampedRadius) {
     if (s.alive && s.year_formed > 20 - species.foliage_years) ++expected;
   const auto balls = tree.leaf_balls();
   EXPECT_EQ(balls.size(), expected);
+  const auto owners = tree.foliage_shoot_indices();
+  ASSERT_EQ(owners.size(), balls.size());
+  for (std::size_t b = 0; b < balls.size(); ++b) EXPECT_EQ(tree.shoots()[owners[b]].tip, balls[b].centre);
   std::size_t ball = 0;
   for (const Shoot& s : tree.shoots()) {
     if (!(s.alive && s.year_formed > 20 - species.foliage_years)) continue;
