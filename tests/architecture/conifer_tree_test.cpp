@@ -124,6 +124,27 @@ TEST(ConiferTree, SecondOrderPairsFlushAtLastYearsTipWithLinearElongation) {
   EXPECT_GT(pairs, 20);
 }
 
+TEST(ConiferTree, SecondOrderPairsSpreadFiftyDegreesWithUpDownJitter) {
+  const ConiferTree tree = grown(10);
+  double smallest = 180.0, largest = 0.0;
+  int left = 0, right = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 2) continue;
+    const Shoot& first = tree.shoots()[axis.shoots.front()];
+    const Shoot& bearing = tree.shoots()[first.parent];
+    const glm::dvec3 along = glm::normalize(bearing.tip - bearing.base);
+    const glm::dvec3 out = glm::normalize(first.tip - first.base);
+    const double spread = degrees(std::acos(std::clamp(glm::dot(along, out), -1.0, 1.0)));
+    smallest = std::min(smallest, spread), largest = std::max(largest, spread);
+    // 50° from the parent, tilted up or down by at most 10°: within 50 ± 10°.
+    EXPECT_GE(spread, 40.0 - 1e-9);
+    EXPECT_LE(spread, 60.0 + 1e-9);
+    (glm::dot(glm::cross(along, glm::dvec3{0, 0, 1}), out) > 0.0 ? left : right)++;
+  }
+  EXPECT_GT(largest - smallest, 5.0);  // the jitter is there
+  EXPECT_EQ(left, right);              // opposite pairs
+}
+
 TEST(ConiferTree, ThirdOrderBudsFlushAtTheTableRateOfTheirParentShoot) {
   SpeciesParameters species;
   species.activity = -5.0;           // S2 = 13, S3 = 8: third order grows
