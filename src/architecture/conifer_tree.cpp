@@ -341,6 +341,13 @@ std::vector<LeafBall> ConiferTree::leaf_balls() const {
   return balls;
 }
 
+std::vector<int> ConiferTree::foliage_shoot_indices() const {
+  std::vector<int> indices;
+  for (std::size_t i = 0; i < shoots_.size(); ++i)
+    if (carries_foliage(shoots_[i])) indices.push_back(static_cast<int>(i));
+  return indices;
+}
+
 // Mean over 8 azimuth sectors (45° each, around the stem) of the farthest horizontal reach of living foliage:
 // leaf-ball centre distance from the stem axis plus the ball radius. An empty sector counts 0.
 double ConiferTree::crown_radius_m() const {

@@ -39,6 +39,7 @@ class ConiferTree {
   const std::vector<Shoot>& shoots() const { return shoots_; }
   const std::vector<BranchAxis>& axes() const { return axes_; }
   std::vector<LeafBall> leaf_balls() const;  // one per living shoot tip that carries foliage
+  std::vector<int> foliage_shoot_indices() const;  // the shoot of each leaf ball, in leaf_balls() order
   bool carries_foliage(const Shoot& shoot) const;
   std::size_t living_shoot_count() const;
   glm::dvec3 stem_base() const { return stem_base_; }

@@ -12,6 +12,7 @@
 #include "architecture/branch_diameter.hpp"
 #include "architecture/elongation.hpp"
 #include "architecture/height_curve.hpp"
+#include "architecture/lower_order_branching.hpp"
 #include "architecture/stem_taper.hpp"
 #include "geometry/angles.hpp"
 
@@ -123,6 +124,58 @@ TEST(ConiferTree, SecondOrderPairsFlushAtLastYearsTipWithLinearElongation) {
   EXPECT_GT(pairs, 20);
 }
 
+TEST(ConiferTree, SecondOrderPairsSpreadFiftyDegreesWithUpDownJitter) {
+  const ConiferTree tree = grown(10);
+  double smallest = 180.0, largest = 0.0;
+  int left = 0, right = 0;
+  for (const BranchAxis& axis : tree.axes()) {
+    if (axis.order != 2) continue;
+    const Shoot& first = tree.shoots()[axis.shoots.front()];
+    const Shoot& bearing = tree.shoots()[first.parent];
+    const glm::dvec3 along = glm::normalize(bearing.tip - bearing.base);
+    const glm::dvec3 out = glm::normalize(first.tip - first.base);
+    const double spread = degrees(std::acos(std::clamp(glm::dot(along, out), -1.0, 1.0)));
+    smallest = std::min(smallest, spread), largest = std::max(largest, spread);
+    // 50° from the parent, tilted up or down by at most 10°: within 50 ± 10°.
+    EXPECT_GE(spread, 40.0 - 1e-9);
+    EXPECT_LE(spread, 60.0 + 1e-9);
+    (glm::dot(glm::cross(along, glm::dvec3{0, 0, 1}), out) > 0.0 ? left : right)++;
+  }
+  EXPECT_GT(largest - smallest, 5.0);  // the jitter is there
+  EXPECT_EQ(left, right);              // opposite pairs
+}
+
+TEST(ConiferTree, ThirdOrderBudsFlushAtTheTableRateOfTheirParentShoot) {
+  SpeciesParameters species;
+  species.activity = -5.0;           // S2 = 13, S3 = 8: third order grows
+  species.min_parent_length_m = 0.0;  // the table alone decides
+  TreeCalibration calibration;
+  calibration.elongation_scale = 0.6;  // second-order shoots of 2-7 cm: the table's uncertain rows
+  double expected = 0.0, variance = 0.0;
+  int flushed = 0, uncertain_events = 0;
+  for (int id = 0; id < 6; ++id) {
+    ConiferTree tree(species, calibration, {}, 77, id);
+    tree.grow_to_age(12);
+    std::map<int, int> thirds_on;  // bearing shoot → third-order laterals on it
+    for (const BranchAxis& axis : tree.axes())
+      if (axis.order == 3) ++thirds_on[tree.shoots()[axis.shoots.front()].parent];
+    for (const BranchAxis& axis : tree.axes()) {
+      if (axis.order != 2) continue;
+      // Every shoot but the newest bore a pair attempt the year after it flushed (the axis grew on).
+      for (std::size_t k = 0; k + 1 < axis.shoots.size(); ++k) {
+        const Shoot& bearing = tree.shoots()[axis.shoots[k]];
+        const double p = lateral_occurrence_probability(species, 3, glm::length(bearing.tip - bearing.base));
+        expected += 2.0 * p;
+        variance += 2.0 * p * (1.0 - p);
+        if (p > 0.0 && p < 1.0) ++uncertain_events;
+        flushed += thirds_on[axis.shoots[k]];
+      }
+    }
+  }
+  ASSERT_GT(uncertain_events, 200);
+  EXPECT_NEAR(flushed, expected, 4.0 * std::sqrt(variance)) << "expected " << expected << " ± " << std::sqrt(variance);
+}
+
 TEST(ConiferTree, LowerBranchesStopDieAndFallSoTheCrownBaseRises) {
   TreeCalibration calibration;
   calibration.growth_stop_years_first_order = 10.0;
@@ -192,6 +245,9 @@ TEST(ConiferTree, LeafBallsOnRecentLivingShootsWithClampedRadius) {
     if (s.alive && s.year_formed > 20 - species.foliage_years) ++expected;
   const auto balls = tree.leaf_balls();
   EXPECT_EQ(balls.size(), expected);
+  const auto owners = tree.foliage_shoot_indices();
+  ASSERT_EQ(owners.size(), balls.size());
+  for (std::size_t b = 0; b < balls.size(); ++b) EXPECT_EQ(tree.shoots()[owners[b]].tip, balls[b].centre);
   std::size_t ball = 0;
   for (const Shoot& s : tree.shoots()) {
     if (!(s.alive && s.year_formed > 20 - species.foliage_years)) continue;
