@@ -44,26 +44,19 @@ std::string trimmed(std::string_view text) {
 }
 
 // Where each survey column sits in the file, and the name the file gives it (used in messages, so the
-// user sees the header they wrote).
+// user sees the header they wrote; the canonical name for a column the file lacks).
 struct ColumnLayout {
   std::array<int, column_count> index{};
   std::array<std::string, column_count> header_name{};
   std::size_t field_count = 0;
 
-  ColumnLayout() { index.fill(-1); }
-  bool has(SurveyColumn c) const { return index[static_cast<std::size_t>(c)] >= 0; }
-  const std::string& name(SurveyColumn c) const {
-    const auto& written = header_name[static_cast<std::size_t>(c)];
-    return written.empty() ? header_name_fallback(c) : written;
+  ColumnLayout() {
+    index.fill(-1);
+    for (const auto& info : survey_columns()) header_name[slot(info.column)] = std::string(info.name);
   }
-  static const std::string& header_name_fallback(SurveyColumn c) {
-    static const auto names = [] {
-      std::array<std::string, column_count> n;
-      for (const auto& info : survey_columns()) n[static_cast<std::size_t>(info.column)] = std::string(info.name);
-      return n;
-    }();
-    return names[static_cast<std::size_t>(c)];
-  }
+  static std::size_t slot(SurveyColumn c) { return static_cast<std::size_t>(c); }
+  bool has(SurveyColumn c) const { return index[slot(c)] >= 0; }
+  const std::string& name(SurveyColumn c) const { return header_name[slot(c)]; }
 };
 
 std::string accepted_names(SurveyColumn column) {
