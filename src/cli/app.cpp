@@ -30,6 +30,7 @@ int run(int argc, char** argv) {
   CLI::App app{"heliostand: grows a surveyed forest stand tree by tree and branch by branch"};
   app.set_version_flag("--version", std::string("heliostand ") + HELIOSTAND_VERSION);
   app.require_subcommand(1);
+  app.fallthrough();  // global flags (-v, -q) may follow the subcommand
   int verbose = 0;
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "More log output (debug)");

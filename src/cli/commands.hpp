@@ -17,7 +17,8 @@ void add_bench_command(CLI::App& app, int& status);
 const std::string& invoked_command_line();
 
 // Runs `body`, turning exceptions into messages on stderr and an exit status:
-// InputError → every problem on its own line, status 2; anything else → status 1.
+// InputError → every problem on its own line, status 2; a refused output folder → status 2;
+// anything else → status 1.
 int report_errors(const std::function<int()>& body);
 
 }  // namespace heliostand::cli

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace heliostand::cli {
 
@@ -14,6 +15,9 @@ int report_errors(const std::function<int()>& body) {
   } catch (const InputError& e) {
     for (const auto& problem : e.problems())
       fmt::print(stderr, "error: {}\n", problem.format(e.field_kind()));
+    return 2;
+  } catch (const OutputFolderError& e) {  // a refused --out folder is a usage mistake, not a failure
+    fmt::print(stderr, "error: {}\n", e.what());
     return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());

@@ -44,25 +44,24 @@ std::vector<std::size_t> select_for_thinning(const ThinningRule& rule,
                                              double plot_area_ha) {
   if (rule.method == ThinningMethod::ids) return by_marking_list(rule, living);
 
-  // Remove until the stand is at or below the target: stems/ha counts trees, basal area sums their
-  // cross-sections. A small epsilon keeps "exactly at target" from removing one tree too many.
-  double stems_per_ha = static_cast<double>(living.size()) / plot_area_ha;
-  double basal_area_per_ha = 0;
-  for (const auto& tree : living) basal_area_per_ha += basal_area_m2(tree.dbh_cm) / plot_area_ha;
-  auto above_target = [&] {
-    constexpr double epsilon = 1e-9;
-    if (rule.target_stems_per_ha) return stems_per_ha > *rule.target_stems_per_ha + epsilon;
-    if (rule.target_basal_area_m2_per_ha)
-      return basal_area_per_ha > *rule.target_basal_area_m2_per_ha + epsilon;
-    return false;
-  };
-
+  // A stems/ha target keeps floor(target × area) trees (the scenario check uses the same rule); a basal-area
+  // target removes until the remaining cross-sections sum to at most the target.
+  const auto order = removal_order(rule, living);
   std::vector<std::size_t> chosen;
-  for (std::size_t i : removal_order(rule, living)) {
-    if (!above_target()) break;
-    chosen.push_back(i);
-    stems_per_ha -= 1.0 / plot_area_ha;
-    basal_area_per_ha -= basal_area_m2(living[i].dbh_cm) / plot_area_ha;
+  if (rule.target_stems_per_ha) {
+    const auto keep = static_cast<std::size_t>(
+        std::max(0, trees_kept_for_stem_target(*rule.target_stems_per_ha, plot_area_ha)));
+    for (std::size_t k = 0; k < order.size() && living.size() - chosen.size() > keep; ++k)
+      chosen.push_back(order[k]);
+  } else if (rule.target_basal_area_m2_per_ha) {
+    double basal_area_per_ha = 0;
+    for (const auto& tree : living) basal_area_per_ha += basal_area_m2(tree.dbh_cm) / plot_area_ha;
+    constexpr double epsilon = 1e-9;  // "exactly at target" must not remove one tree too many
+    for (std::size_t i : order) {
+      if (basal_area_per_ha <= *rule.target_basal_area_m2_per_ha + epsilon) break;
+      chosen.push_back(i);
+      basal_area_per_ha -= basal_area_m2(living[i].dbh_cm) / plot_area_ha;
+    }
   }
   return chosen;
 }

@@ -1,0 +1,239 @@
+// End-to-end runs of `heliostand grow` and `heliostand check` on the example stands, as a user runs them.
+#include <gtest/gtest.h>
+
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkInformation.h>
+#include <vtkFieldData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLMultiBlockDataReader.h>
+
+#include <map>
+
+#include "cli/cli_runner.hpp"
+#include "io/csv_test_reader.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The tiny stand: 8 trees on 0.01 ha, age 20 → 25, tree "4" removed at age 23 (stands/tiny/README.md).
+const std::string tiny = source_path("stands/tiny/scenario.toml").string();
+
+// Each CTest process is one TEST, so a run shared by several checks lives inside one TEST: the tiny
+// stand is grown once with the reference solver and every output aspect is checked on that run.
+CliResult grow_tiny(const fs::path& folder, const std::string& extra) {
+  return run_cli("grow " + tiny + " --out " + folder.string() + " " + extra + " -q");
+}
+
+std::vector<std::map<std::string, std::string>> read_table(const fs::path& path) {
+  const auto records = parse_csv(read_text(path));
+  std::vector<std::map<std::string, std::string>> rows;
+  for (std::size_t r = 1; r < records.size(); ++r) {
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < records[0].size() && c < records[r].size(); ++c) row[records[0][c]] = records[r][c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> read_year(const fs::path& folder, int stand_age) {
+  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
+  char name[32];
+  std::snprintf(name, sizeof name, "stand_age_%04d.vtm", stand_age);
+  reader->SetFileName((folder / "stand" / name).c_str());
+  reader->Update();
+  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+}
+
+vtkPolyData* block(vtkMultiBlockDataSet* multiblock, const std::string& name) {
+  for (unsigned i = 0; i < multiblock->GetNumberOfBlocks(); ++i) {
+    const char* block_name = multiblock->GetMetaData(i)->Get(vtkCompositeDataSet::NAME());
+    if (block_name != nullptr && name == block_name) return vtkPolyData::SafeDownCast(multiblock->GetBlock(i));
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void check_every_output_written(const fs::path& folder) {
+  for (const char* file : {"stand.pvd", "stand_table.csv", "trees.csv", "events.csv", "run.json"})
+    EXPECT_TRUE(fs::exists(folder / file)) << file;
+  // run.json is written last: no output file is newer.
+  const auto manifest_time = fs::last_write_time(folder / "run.json");
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.is_regular_file()) EXPECT_LE(entry.last_write_time(), manifest_time) << entry.path();
+  EXPECT_NE(read_text(folder / "run.json").find("\"light\""), std::string::npos) << "light time in run.json";
+}
+
+void check_thinning(const fs::path& folder) {
+  const auto events = read_table(folder / "events.csv");
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].at("label"), "4");
+  EXPECT_EQ(events[0].at("stand_age"), "23");
+  EXPECT_EQ(events[0].at("event"), "removed");
+
+  const auto table = read_table(folder / "stand_table.csv");
+  ASSERT_EQ(table.size(), 6u) << "ages 20..25, output every year";
+  std::map<int, double> stems, removed;
+  for (const auto& row : table) {
+    stems[std::stoi(row.at("stand_age"))] = std::stod(row.at("stems_per_ha"));
+    removed[std::stoi(row.at("stand_age"))] = std::stod(row.at("removed_stems_per_ha"));
+  }
+  EXPECT_DOUBLE_EQ(stems[22], 800.0);  // 8 trees on 0.01 ha
+  EXPECT_DOUBLE_EQ(stems[23], 700.0);
+  EXPECT_DOUBLE_EQ(removed[23], 100.0);
+  EXPECT_DOUBLE_EQ(removed[24], 0.0);
+
+  // The removed tree appears once, in the year of its removal, and never again.
+  int rows_of_removed = 0;
+  for (const auto& row : read_table(folder / "trees.csv"))
+    if (row.at("label") == "4" && std::stoi(row.at("stand_age")) >= 23) {
+      ++rows_of_removed;
+      EXPECT_EQ(row.at("status"), "removed");
+    }
+  EXPECT_EQ(rows_of_removed, 1);
+}
+
+void check_vtk_years(const fs::path& folder) {
+  const auto last = read_year(folder, 25);
+  ASSERT_NE(last, nullptr);
+  vtkPolyData* trees = block(last, "trees");
+  vtkPolyData* branches = block(last, "branches");
+  vtkPolyData* balls = block(last, "leaf_balls");
+  ASSERT_NE(trees, nullptr);
+  ASSERT_NE(branches, nullptr);
+  ASSERT_NE(balls, nullptr);
+  EXPECT_EQ(trees->GetNumberOfPoints(), 7) << "8 trees less the one thinned at 23";
+  auto* time = last->GetFieldData()->GetArray("TimeValue");
+  ASSERT_NE(time, nullptr);
+  EXPECT_DOUBLE_EQ(time->GetTuple1(0), 25.0);
+  auto* radius = branches->GetPointData()->GetArray("radius");
+  ASSERT_NE(radius, nullptr) << "tube radius must be point data";
+  EXPECT_EQ(radius->GetNumberOfTuples(), branches->GetNumberOfPoints());
+  auto* light = balls->GetPointData()->GetArray("light");
+  ASSERT_NE(light, nullptr);
+  EXPECT_EQ(light->GetNumberOfTuples(), balls->GetNumberOfPoints());
+  EXPECT_GT(balls->GetNumberOfPoints(), 7 * 10) << "every living tree carries foliage";
+  double range[2];
+  light->GetRange(range);
+  EXPECT_GE(range[0], 0.0);
+  EXPECT_LE(range[1], 1.0);
+  EXPECT_GT(range[1], range[0]) << "leaf balls are not all equally lit";
+
+  const auto first = read_year(folder, 20);
+  EXPECT_EQ(block(first, "trees")->GetNumberOfPoints(), 8);
+}
+
+void check_opencl_agrees(const fs::path& folder) {
+  const auto opencl = scratch_folder("tiny_opencl");
+  const auto run = grow_tiny(opencl, "--device opencl");
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto reference_rows = read_table(folder / "trees.csv");
+  const auto opencl_rows = read_table(opencl / "trees.csv");
+  ASSERT_EQ(reference_rows.size(), opencl_rows.size());
+  for (std::size_t i = 0; i < reference_rows.size(); ++i) {
+    // Growth does not yet respond to light, so everything but the light itself must be identical.
+    for (const char* column : {"label", "status", "height_m", "dbh_cm", "crown_radius_m", "leaf_balls"})
+      EXPECT_EQ(reference_rows[i].at(column), opencl_rows[i].at(column)) << "row " << i << " " << column;
+    EXPECT_NEAR(std::stod(reference_rows[i].at("mean_light")), std::stod(opencl_rows[i].at("mean_light")), 2e-4)
+        << "row " << i;
+  }
+}
+
+TEST(GrowCli, TinyStandEndToEnd) {
+  const auto folder = scratch_folder("tiny_reference");
+  const auto run = grow_tiny(folder, "--device reference");
+  ASSERT_EQ(run.status, 0) << run.output;
+  {
+    SCOPED_TRACE("every output written, run.json last");
+    check_every_output_written(folder);
+  }
+  {
+    SCOPED_TRACE("thinning by id at age 23");
+    check_thinning(folder);
+  }
+  {
+    SCOPED_TRACE("VTK years read back");
+    check_vtk_years(folder);
+  }
+  {
+    SCOPED_TRACE("OpenCL run agrees with the reference run");
+    check_opencl_agrees(folder);
+  }
+}
+
+TEST(GrowCli, SameSeedGivesIdenticalTablesAndAnotherSeedDoesNot) {
+  const auto first = scratch_folder("tiny_seed_7_a"), again = scratch_folder("tiny_seed_7_b");
+  const auto other = scratch_folder("tiny_seed_99");
+  ASSERT_EQ(grow_tiny(first, "--device opencl").status, 0);
+  ASSERT_EQ(grow_tiny(again, "--device opencl").status, 0);
+  ASSERT_EQ(grow_tiny(other, "--device opencl --seed 99").status, 0);
+  EXPECT_EQ(read_text(first / "trees.csv"), read_text(again / "trees.csv"));
+  EXPECT_EQ(read_text(first / "stand_table.csv"), read_text(again / "stand_table.csv"));
+  EXPECT_NE(read_text(first / "trees.csv"), read_text(other / "trees.csv"));
+}
+
+TEST(GrowCli, NonEmptyOutputFolderIsRefusedWithoutForce) {
+  const auto folder = scratch_folder("tiny_not_empty");
+  fs::create_directories(folder);
+  std::ofstream(folder / "notes.txt") << "mine\n";
+  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --device reference");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--force"), std::string::npos) << run.output;
+  EXPECT_EQ(read_text(folder / "notes.txt"), "mine\n");
+  EXPECT_FALSE(fs::exists(folder / "stand.pvd"));
+}
+
+TEST(GrowCli, BadSurveyIsRejectedBeforeAnyOutput) {
+  const auto folder = scratch_folder("bad_survey");
+  const auto run = run_cli("grow " + source_path("stands/bad/scenario_bad_survey.toml").string() + " --out " +
+                           folder.string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("survey_many_problems.csv:4: column 'height': expected a number > 0, got \"-3\""),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("survey_many_problems.csv:5: column 'id': duplicate id"), std::string::npos);
+  EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
+}
+
+TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
+  const auto folder = scratch_folder("tiny_too_short");
+  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --years 2");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("run.years"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(folder));
+}
+
+TEST(CheckCli, GoodScenarioPrintsASummary) {
+  const auto run = run_cli("check " + source_path("stands/sobetsu/scenario.toml").string());
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("62 trees"), std::string::npos) << run.output;
+}
+
+TEST(CheckCli, BadKeysAreListedWithTheirPathAndExitTwo) {
+  const auto run = run_cli("check " + source_path("stands/bad/scenario_bad_keys.toml").string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("key 'stand.colour': unknown key"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("key 'light.transmittance'"), std::string::npos) << run.output;
+}
+
+TEST(CheckCli, MissingScenarioFileIsBadInput) {
+  const auto run = run_cli("check /nonexistent/scenario.toml");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("/nonexistent/scenario.toml"), std::string::npos) << run.output;
+}
+
+TEST(Cli, VersionAndUsageErrors) {
+  const auto version = run_cli("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_NE(version.output.find(HELIOSTAND_VERSION), std::string::npos);
+  EXPECT_EQ(run_cli("grow").status, 2) << "missing arguments are a usage error";
+  EXPECT_EQ(run_cli("no-such-command").status, 2);
+}
+
+}  // namespace heliostand::testing
