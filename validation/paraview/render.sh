@@ -22,6 +22,11 @@ out_dir=$2
 here=$(cd "$(dirname "$0")" && pwd)
 
 skip() {
+  # In CI (CI=true) a missing ParaView is a broken set-up, not a reason to skip.
+  if [ "${CI:-}" = true ]; then
+    echo "error: $* (CI=true: rendering is required)" >&2
+    exit 1
+  fi
   echo "skipped: $*" >&2
   exit 77
 }
