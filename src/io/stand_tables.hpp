@@ -1,5 +1,5 @@
 #pragma once
-// The three CSV tables of a run (columns, units and meaning: docs/outputs.md):
+// The three CSV tables of a run (columns, units and meaning: docs/formats.md):
 //   stand_table.csv  one row per output year: stand metrics per hectare, removals and deaths
 //   trees.csv        one row per tree per output year
 //   events.csv       one row per tree removed (thinning) or dead (mortality), every simulated year

@@ -4,7 +4,7 @@
 
 namespace heliostand {
 
-// The integer values are part of the output format (docs/outputs.md): never renumber them.
+// The integer values are part of the output format (docs/formats.md): never renumber them.
 enum class TreeStatus : int {
   alive = 0,    // standing and living
   dead = 1,     // died (mortality) and still standing in the stand

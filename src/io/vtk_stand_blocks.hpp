@@ -1,7 +1,7 @@
 #pragma once
 // The blocks of the yearly VTK multiblock. Each block is built from the StandSnapshot by a named
 // builder, so a later feature (roots, soil grid, trunk or hollow meshes) adds a block by adding a
-// builder to the list — the writer does not change. Arrays and units: docs/outputs.md.
+// builder to the list — the writer does not change. Arrays and units: docs/formats.md.
 #include <functional>
 #include <string>
 #include <vector>

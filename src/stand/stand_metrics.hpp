@@ -1,5 +1,5 @@
 #pragma once
-// Stand-level forestry metrics of one output year: the rows of stand_table.csv (docs/outputs.md).
+// Stand-level forestry metrics of one output year: the rows of stand_table.csv (docs/formats.md).
 #include <span>
 #include <vector>
 
