@@ -61,14 +61,14 @@ RootParameters tap_rooted_conifer() {
   tap.elongation_m_per_year = 0.15;
   tap.radius_m = 0.02;
   tap.lifespan_years = 1000.0;
-  tap.growth_years = 10.0;
+  tap.growth_years = 6.0;
   tap.perception_radius_m = 0.3;
   tap.absorptive_weight = 0.5;
   tap.tropisms = {.alpha = 0.3, .beta = 0.7};
 
   RootTypeParameters& lateral = parameters.of(RootType::lateral);
-  lateral.branching_frequency = frequencies(0.0, 0.25, 0.15, 1.0);
-  lateral.branching_angle_deg = {60.0, 90.0};
+  lateral.branching_frequency = frequencies(0.0, 0.25, 0.1, 1.0);
+  lateral.branching_angle_deg = {75.0, 95.0};
   lateral.continuation_angle_deg = {0.0, 20.0};
   lateral.elongation_m_per_year = 0.25;
   lateral.radius_m = 0.008;
@@ -76,7 +76,7 @@ RootParameters tap_rooted_conifer() {
   lateral.growth_years = 25.0;
   lateral.perception_radius_m = 0.3;
   lateral.absorptive_weight = 0.5;
-  lateral.tropisms = {.alpha = 0.55, .beta = 0.05, .gamma = 0.3, .delta = 0.05, .epsilon = 0.05};
+  lateral.tropisms = {.alpha = 0.5, .gamma = 0.4, .delta = 0.05, .epsilon = 0.05};
 
   RootTypeParameters& sinker = parameters.of(RootType::sinker);
   sinker.branching_frequency = frequencies(0.0, 0.0, 0.05, 0.5);
@@ -85,7 +85,7 @@ RootParameters tap_rooted_conifer() {
   sinker.elongation_m_per_year = 0.12;
   sinker.radius_m = 0.005;
   sinker.lifespan_years = 1000.0;
-  sinker.growth_years = 8.0;
+  sinker.growth_years = 5.0;
   sinker.perception_radius_m = 0.2;
   sinker.absorptive_weight = 0.5;
   sinker.tropisms = {.alpha = 0.3, .beta = 0.6, .delta = 0.05, .epsilon = 0.05};

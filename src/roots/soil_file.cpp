@@ -126,6 +126,7 @@ void read_soil_csv(std::istream& in, const std::string& file_name, SoilGrid& soi
     }
   }
   if (!problems.empty()) throw InputError(problems);
+  for (auto [column, field] : value_columns) staged.set_capacity_to_current(field);
   soil = std::move(staged);
 }
 

@@ -6,7 +6,7 @@
 //   0,0,0,0.80,0.50
 //
 // i, j, k are vertex indices (0 .. cells along that axis); the value columns present (moisture and/or
-// nutrient, any order) overwrite those vertices; vertices not listed keep the grid's current value, so a
+// nutrient, any order) overwrite those vertices (value and capacity); vertices not listed keep the grid's current value, so a
 // file can patch a uniform or layered start. Every problem in the file is reported at once as an
 // InputError ("soil.csv:7: column 'moisture': expected a number >= 0, got \"wet\"").
 #include <filesystem>

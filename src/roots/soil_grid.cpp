@@ -14,6 +14,7 @@ SoilGrid::SoilGrid(const SoilGridGeometry& geometry, double moisture, double nut
     throw std::invalid_argument("soil grid: need at least one cell along every axis");
   fields_[0].assign(vertex_count(), moisture);
   fields_[1].assign(vertex_count(), nutrient);
+  capacity_ = fields_;
 }
 
 std::size_t SoilGrid::vertex_count() const {
@@ -63,7 +64,10 @@ double SoilGrid::value(SoilField field, const glm::dvec3& point) const {
   return sum;
 }
 
-void SoilGrid::fill_uniform(SoilField field, double value) { std::ranges::fill(values(field), value); }
+void SoilGrid::fill_uniform(SoilField field, double value) {
+  std::ranges::fill(values(field), value);
+  set_capacity_to_current(field);
+}
 
 void SoilGrid::fill_gradient(SoilField field, int axis, double at_min, double at_max) {
   if (axis < 0 || axis > 2) throw std::invalid_argument("soil grid: gradient axis must be 0, 1 or 2");
@@ -74,6 +78,7 @@ void SoilGrid::fill_gradient(SoilField field, int axis, double at_min, double at
         const double t = static_cast<double>(glm::ivec3(i, j, k)[axis]) / geometry_.cells[axis];
         at(field, i, j, k) = at_min + (at_max - at_min) * t;
       }
+  set_capacity_to_current(field);
 }
 
 void SoilGrid::fill_layers(SoilField field, const std::vector<double>& bottoms_m, const std::vector<double>& layer_values) {
@@ -88,6 +93,7 @@ void SoilGrid::fill_layers(SoilField field, const std::vector<double>& bottoms_m
     for (int j = 0; j < n.y; ++j)
       for (int i = 0; i < n.x; ++i) at(field, i, j, k) = value;
   }
+  set_capacity_to_current(field);
 }
 
 double SoilGrid::deplete(SoilField field, const glm::dvec3& point, double fraction) {
@@ -103,12 +109,12 @@ double SoilGrid::deplete(SoilField field, const glm::dvec3& point, double fracti
 
 void SoilGrid::recharge(const SoilRecharge& recharge, double years) {
   // Exponential approach, so that several years at once equal the same years one by one.
-  auto relax = [years](std::vector<double>& v, double target, double rate) {
+  auto relax = [years](std::vector<double>& v, const std::vector<double>& target, double rate) {
     const double keep = std::pow(1.0 - std::clamp(rate, 0.0, 1.0), years);
-    for (double& value : v) value = target + (value - target) * keep;
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = target[i] + (v[i] - target[i]) * keep;
   };
-  relax(values(SoilField::moisture), recharge.field_capacity, recharge.moisture_rate);
-  relax(values(SoilField::nutrient), recharge.nutrient_level, recharge.nutrient_rate);
+  relax(values(SoilField::moisture), capacity(SoilField::moisture), recharge.moisture_rate);
+  relax(values(SoilField::nutrient), capacity(SoilField::nutrient), recharge.nutrient_rate);
 }
 
 }  // namespace heliostand::roots

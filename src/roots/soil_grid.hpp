@@ -3,8 +3,11 @@
 // the voxel vertices, read anywhere by trilinear interpolation. Uptake by root tips depletes it; a
 // yearly recharge moves every vertex back toward field capacity.
 //
-// Moisture and nutrient are relative levels: 0 = dry / none, 1 = field capacity / the reference
-// fertility (seed 003 uses 0.5 for poor and 1.0 for rich soil). The grid's top face is the soil surface.
+// Moisture and nutrient are relative levels: 0 = dry / none, 1 = saturated / the reference fertility
+// (seed 003 uses 0.5 for poor and 1.0 for rich soil). The grid's top face is the soil surface.
+// Every vertex also keeps its capacity — the level the site returns to (field capacity for moisture):
+// the fill_* functions and the soil file set value and capacity together; uptake lowers only the value;
+// recharge moves the value back toward the capacity, so a dry slope stays dry and a wet hollow wet.
 #include <array>
 #include <vector>
 
@@ -21,10 +24,8 @@ struct SoilGridGeometry {
 };
 
 struct SoilRecharge {
-  double field_capacity = 1.0;   // moisture the soil returns to
-  double moisture_rate = 0.5;    // fraction of the deficit restored per year (0..1)
-  double nutrient_level = 1.0;   // nutrient level the soil returns to
-  double nutrient_rate = 0.2;    // fraction of the nutrient deficit restored per year (0..1)
+  double moisture_rate = 0.8;    // fraction of the moisture deficit (capacity − value) restored per year
+  double nutrient_rate = 0.3;    // fraction of the nutrient deficit restored per year
 };
 
 class SoilGrid {
@@ -50,9 +51,12 @@ class SoilGrid {
   double at(SoilField field, int i, int j, int k) const;
   const std::vector<double>& values(SoilField field) const { return fields_[static_cast<int>(field)]; }
   std::vector<double>& values(SoilField field) { return fields_[static_cast<int>(field)]; }
+  const std::vector<double>& capacity(SoilField field) const { return capacity_[static_cast<int>(field)]; }
+  // The current values become the capacity (after editing values by hand).
+  void set_capacity_to_current(SoilField field) { capacity_[static_cast<int>(field)] = values(field); }
   std::size_t vertex_index(int i, int j, int k) const;
 
-  // Initial fields.
+  // Initial fields (value and capacity).
   void fill_uniform(SoilField field, double value);
   // Linear from `at_min` on the grid's min face to `at_max` on its max face along axis 0=x, 1=y, 2=z.
   void fill_gradient(SoilField field, int axis, double at_min, double at_max);
@@ -64,7 +68,7 @@ class SoilGrid {
   // (trilinear weights), never below 0. Returns the amount removed (sum over vertices).
   double deplete(SoilField field, const glm::dvec3& point, double fraction);
 
-  // One year of recharge: value += rate · (target − value) at every vertex.
+  // Recharge: value += rate · (capacity − value) per year at every vertex (compounded over `years`).
   void recharge(const SoilRecharge& recharge, double years = 1.0);
 
  private:
@@ -76,6 +80,7 @@ class SoilGrid {
 
   SoilGridGeometry geometry_;
   std::array<std::vector<double>, 2> fields_;
+  std::array<std::vector<double>, 2> capacity_;
 };
 
 }  // namespace heliostand::roots
