@@ -14,7 +14,11 @@ RootExperimentResult run_experiment(const RootExperiment& experiment, RootFieldS
   for (RootSystem& tree : result.trees) trees.push_back(&tree);
   SoilRecharge recharge;
   for (int year = planting_year + 1; year <= planting_year + experiment.years; ++year) {
-    grow_roots(trees, result.soil, solver, year, experiment.seed);
+    if (experiment.trees_feel_each_other) {
+      grow_roots(trees, result.soil, solver, year, experiment.seed);
+    } else {
+      for (RootSystem* tree : trees) grow_roots(std::span(&tree, 1), result.soil, solver, year, experiment.seed);
+    }
     if (experiment.recharge) result.soil.recharge(recharge);
   }
   return result;

@@ -22,6 +22,9 @@ struct RootExperiment {
   int years = 15;                     // the seed's 15 generations
   std::uint64_t seed = 1;
   bool recharge = true;               // yearly recharge (SoilRecharge defaults) after uptake
+  // false: each tree is grown alone (sharing only the soil), blind to the other trees' roots — the
+  // counterfactual that isolates contact avoidance across trees.
+  bool trees_feel_each_other = true;
 };
 
 struct RootExperimentResult {
