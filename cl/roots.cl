@@ -2,8 +2,8 @@
 //   contact avoidance  Vt = −Σ unit(apex → nearest point of each other segment inside the perception sphere)
 //   moisture pull      Vw =  Σ unit(probe_k) · moisture(apex + R probe_k)
 // Same meaning as roots::ReferenceRootFieldSolver (the oracle). Candidate segments come from a uniform
-// grid over segment midpoints (roots::SegmentGrid, CSR: cell_start / cell_segments) whose cell edge is at
-// least R + the longest half segment. All positions are relative to one frame origin (float precision).
+// grid over segment midpoints (roots::SegmentGrid, CSR: segments sorted by cell, cell_start); a midpoint can only
+// matter within R + the longest half segment ("reach"), and cells wholly beyond the reach are skipped. All positions are relative to one frame origin (float precision).
 // Soil moisture at a point: trilinear interpolation of vertex values, points outside the grid read the
 // nearest boundary value (the same rule as roots::SoilGrid::value). Coordinates relative to the frame origin.
 float soil_moisture(global const float* moisture, int4 vertices, float3 soil_origin, float spacing, float3 p) {
@@ -28,8 +28,10 @@ int3 grid_cell(float3 p, float3 grid_origin, float cell_size, int3 dims) {
   return clamp(convert_int3(floor((p - grid_origin) / cell_size)), (int3)(0), dims - 1);
 }
 
-kernel void root_contact_field(global const float4* segment_start, global const float4* segment_end,
-                               global const int* cell_start, global const int* cell_segments,
+kernel void root_contact_field(global const float4* segment_middle,  // xyz midpoint, w half length
+                               global const float4* segment_start, global const float4* segment_end,
+                               global const int* segment_id,  // the caller's index, for the exclusions
+                               global const int* cell_start,
                                const int4 grid_dims, const float4 grid_origin, const float cell_size,
                                const float longest_half,
                                global const float4* tips,  // xyz apex, w perception radius R
@@ -57,12 +59,22 @@ kernel void root_contact_field(global const float4* segment_start, global const 
     for (int z = low.z; z <= high.z; ++z)
       for (int y = low.y; y <= high.y; ++y)
         for (int x = low.x; x <= high.x; ++x) {
+          // Skip cells whose box lies wholly outside the reach (cells are about reach/2 wide).
+          const float3 box_low = grid_origin.xyz + cell_size * (float3)((float)x, (float)y, (float)z);
+          const float3 gap = max(max(box_low - apex, apex - (box_low + cell_size)), (float3)(0.0f));
+          if (dot(gap, gap) > reach * reach) continue;
           const int cell = x + dims.x * (y + dims.y * z);
+          // Segments are stored in cell order, so a cell's segments are contiguous in memory.
           for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-            const int s = cell_segments[i];
+            // Cheap rejection first: the nearest point lies within half a length of the midpoint.
+            const float4 middle = segment_middle[i];
+            const float3 offset = middle.xyz - apex;
+            const float bound = radius + middle.w + 1e-4f;
+            if (dot(offset, offset) > bound * bound) continue;
+            const int s = segment_id[i];
             if (s == skip.x || s == skip.y) continue;
-            const float3 a = segment_start[s].xyz;
-            const float3 axis = segment_end[s].xyz - a;
+            const float3 a = segment_start[i].xyz;
+            const float3 axis = segment_end[i].xyz - a;
             const float length2 = dot(axis, axis);
             const float u = length2 > 0.0f ? clamp(dot(apex - a, axis) / length2, 0.0f, 1.0f) : 0.0f;
             const float3 toward = a + u * axis - apex;

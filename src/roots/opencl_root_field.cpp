@@ -1,6 +1,7 @@
 #include "roots/opencl_root_field.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 #include <CL/opencl.hpp>
@@ -84,24 +85,38 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
   double longest_half = 0.0;
   for (const RootSegmentLine& segment : input.segments)
     longest_half = std::max(longest_half, 0.5 * glm::length(segment.end - segment.start));
-  const SegmentGrid grid = SegmentGrid::build(input.segments, widest_sphere + longest_half);
+  // Cells half the widest reach: a query visits at most 5³ cells and skips those wholly outside its reach,
+  // which hugs the sphere more tightly than 3³ cells of a whole reach.
+  const SegmentGrid grid = SegmentGrid::build(input.segments, 0.5 * (widest_sphere + longest_half));
 
   // One frame origin for everything on the device keeps float positions small (sub-micrometre over 100 m).
   const glm::dvec3 frame = input.soil != nullptr ? input.soil->min_corner() : grid.origin;
-  std::vector<cl_float4> starts, ends, tips, probes;
+  // Segments in cell order (the kernel walks a cell's segments contiguously), each with its midpoint and
+  // half length for a cheap first test, and its index in the caller's list for the exclusions.
+  std::vector<cl_float4> middles, starts, ends, tips, probes;
   std::vector<cl_int2> excluded;
+  middles.reserve(input.segments.size());
   starts.reserve(input.segments.size());
   ends.reserve(input.segments.size());
-  for (const RootSegmentLine& segment : input.segments) {
+  for (int s : grid.cell_segments) {
+    const RootSegmentLine& segment = input.segments[s];
+    middles.push_back(to_float4(0.5 * (segment.start + segment.end) - frame, 0.5 * glm::length(segment.end - segment.start)));
     starts.push_back(to_float4(segment.start - frame));
     ends.push_back(to_float4(segment.end - frame));
   }
-  for (const RootTipQuery& tip : input.tips) {
+  // Apices in cell order too: neighbouring work-items then walk the same cells (SIMD lanes and caches agree).
+  std::vector<std::size_t> order(input.tips.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> tip_cell(input.tips.size());
+  for (std::size_t t = 0; t < input.tips.size(); ++t) tip_cell[t] = grid.cell_index(grid.cell_of(input.tips[t].position));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
+  const int probes_per_tip = input.soil != nullptr ? std::max(input.probes_per_tip, 0) : 0;
+  for (std::size_t t : order) {
+    const RootTipQuery& tip = input.tips[t];
     tips.push_back(to_float4(tip.position - frame, tip.perception_radius_m));
     excluded.push_back({{tip.excluded[0], tip.excluded[1]}});
+    for (int p = 0; p < probes_per_tip; ++p) probes.push_back(to_float4(input.probes[t * probes_per_tip + p]));
   }
-  const int probes_per_tip = input.soil != nullptr ? std::max(input.probes_per_tip, 0) : 0;
-  for (std::size_t p = 0; p < input.tips.size() * probes_per_tip; ++p) probes.push_back(to_float4(input.probes[p]));
   std::vector<float> moisture;
   cl_int4 soil_vertices{{2, 2, 2, 0}};
   cl_float4 soil_origin{{0, 0, 0, 0}};
@@ -114,12 +129,13 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
     soil_origin = to_float4(input.soil->min_corner() - frame);
     soil_spacing = static_cast<float>(input.soil->geometry().spacing_m);
   }
-  std::vector<int> cell_start = grid.cell_start, cell_segments = grid.cell_segments;
+  std::vector<int> cell_start = grid.cell_start, segment_ids = grid.cell_segments;
 
+  cl::Buffer middle_buffer = read_only_buffer(s.context, middles);
   cl::Buffer start_buffer = read_only_buffer(s.context, starts);
   cl::Buffer end_buffer = read_only_buffer(s.context, ends);
+  cl::Buffer segment_id_buffer = read_only_buffer(s.context, segment_ids);
   cl::Buffer cell_start_buffer = read_only_buffer(s.context, cell_start);
-  cl::Buffer cell_segment_buffer = read_only_buffer(s.context, cell_segments);
   cl::Buffer tip_buffer = read_only_buffer(s.context, tips);
   cl::Buffer excluded_buffer = read_only_buffer(s.context, excluded);
   cl::Buffer probe_buffer = read_only_buffer(s.context, probes);
@@ -129,10 +145,11 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
   cl::Buffer moisture_out(s.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
 
   int arg = 0;
+  s.kernel.setArg(arg++, middle_buffer);
   s.kernel.setArg(arg++, start_buffer);
   s.kernel.setArg(arg++, end_buffer);
+  s.kernel.setArg(arg++, segment_id_buffer);
   s.kernel.setArg(arg++, cell_start_buffer);
-  s.kernel.setArg(arg++, cell_segment_buffer);
   s.kernel.setArg(arg++, cl_int4{{grid.dims.x, grid.dims.y, grid.dims.z, 0}});
   s.kernel.setArg(arg++, to_float4(grid.origin - frame));
   s.kernel.setArg(arg++, static_cast<float>(grid.cell_size_m));
@@ -154,10 +171,11 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);
   s.queue.enqueueReadBuffer(contact_out, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
   s.queue.enqueueReadBuffer(moisture_out, CL_TRUE, 0, sizeof(cl_float4) * tip_count, pulls.data());
-  for (std::size_t t = 0; t < tip_count; ++t) {
-    samples[t].contact_avoidance = {contacts[t].s[0], contacts[t].s[1], contacts[t].s[2]};
-    samples[t].contacts = static_cast<int>(contacts[t].s[3]);
-    samples[t].moisture_pull = {pulls[t].s[0], pulls[t].s[1], pulls[t].s[2]};
+  for (std::size_t i = 0; i < tip_count; ++i) {
+    RootFieldSample& sample = samples[order[i]];
+    sample.contact_avoidance = {contacts[i].s[0], contacts[i].s[1], contacts[i].s[2]};
+    sample.contacts = static_cast<int>(contacts[i].s[3]);
+    sample.moisture_pull = {pulls[i].s[0], pulls[i].s[1], pulls[i].s[2]};
   }
   return samples;
 }

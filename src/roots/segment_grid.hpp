@@ -1,7 +1,6 @@
 #pragma once
 // A uniform grid over root-segment midpoints in compressed (CSR) form — the spatial index the OpenCL
 // root-contact kernel walks: the segments of cell c are cell_segments[cell_start[c] .. cell_start[c+1]).
-// With the cell edge ≥ R + the longest half segment, a query only visits the 3×3×3 cells around it.
 #include <span>
 #include <vector>
 
