@@ -22,6 +22,7 @@ struct Backend {
   std::string label;
   std::function<std::unique_ptr<RootFieldSolver>()> make;
 };
+void PrintTo(const Backend& backend, std::ostream* out) { *out << backend.label; }
 
 class RootFieldSolverContract : public testing::TestWithParam<Backend> {
  protected:

@@ -4,6 +4,7 @@
 // Usage: heliostand_roots_depth_report [OUTPUT.md]   (stdout without an argument)
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -62,7 +63,10 @@ int main(int argc, char** argv) {
                      std::log(0.5) / std::log(jackson_beta), std::log(0.05) / std::log(jackson_beta));
 
   if (argc > 1) {
-    std::ofstream file(argv[1]);
+    const std::filesystem::path path(argv[1]);
+    std::error_code ignored;
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
+    std::ofstream file(path);
     if (!file) {
       std::cerr << "error: cannot write " << argv[1] << "\n";
       return 2;
