@@ -39,11 +39,13 @@ void RootParameters::validate() const {
     if (!(p.growth_years > 0.0)) fail(type, "growth_years", "must be > 0");
     if (!(p.perception_radius_m > 0.0)) fail(type, "perception_radius_m", "must be > 0");
     if (!(p.absorptive_weight >= 0.0)) fail(type, "absorptive_weight", "must be >= 0");
+    if (!(p.fine_root_sprouting_per_year >= 0.0)) fail(type, "fine_root_sprouting_per_year", "must be >= 0");
   }
   if (moisture_probes < 2 || moisture_probes % 2 != 0)
     throw std::invalid_argument("root parameters: moisture_probes must be an even number >= 2");
   if (!(uptake_decay_years > 0.0)) throw std::invalid_argument("root parameters: uptake_decay_years must be > 0");
   if (!(uptake_rate_per_m >= 0.0)) throw std::invalid_argument("root parameters: uptake_rate_per_m must be >= 0");
+  if (max_woody_order < 1) throw std::invalid_argument("root parameters: max_woody_order must be >= 1");
   if (max_segments < 1) throw std::invalid_argument("root parameters: max_segments must be >= 1");
 }
 
@@ -67,13 +69,14 @@ RootParameters tap_rooted_conifer() {
   tap.tropisms = {.alpha = 0.3, .beta = 0.7};
 
   RootTypeParameters& lateral = parameters.of(RootType::lateral);
-  lateral.branching_frequency = frequencies(0.0, 0.25, 0.1, 1.0);
+  lateral.branching_frequency = frequencies(0.0, 0.2, 0.1, 1.0);
   lateral.branching_angle_deg = {75.0, 95.0};
   lateral.continuation_angle_deg = {0.0, 20.0};
   lateral.elongation_m_per_year = 0.25;
   lateral.radius_m = 0.008;
   lateral.lifespan_years = 1000.0;
   lateral.growth_years = 25.0;
+  lateral.fine_root_sprouting_per_year = 0.1;
   lateral.perception_radius_m = 0.3;
   lateral.absorptive_weight = 0.5;
   lateral.tropisms = {.alpha = 0.5, .gamma = 0.4, .delta = 0.05, .epsilon = 0.05};
@@ -86,6 +89,7 @@ RootParameters tap_rooted_conifer() {
   sinker.radius_m = 0.005;
   sinker.lifespan_years = 1000.0;
   sinker.growth_years = 5.0;
+  sinker.fine_root_sprouting_per_year = 0.1;
   sinker.perception_radius_m = 0.2;
   sinker.absorptive_weight = 0.5;
   sinker.tropisms = {.alpha = 0.3, .beta = 0.6, .delta = 0.05, .epsilon = 0.05};

@@ -41,6 +41,10 @@ struct RootTypeParameters {
   double radius_m = 0.001;               // segment radius (drawn as tube radius)
   double lifespan_years = 1000.0;        // a segment older than this dies, with everything it carries
   double growth_years = 1000.0;          // an axis stops elongating this many years after it started
+  // Expected new fine roots per year started by each living segment that is NOT an apex (our extension:
+  // the woody framework keeps renewing its fine roots after its axes stop; only where the rules allow
+  // this type → fine). 0 = fine roots only at apices, as in the seed's 15-generation demonstrations.
+  double fine_root_sprouting_per_year = 0.0;
   double perception_radius_m = 0.2;      // radius of the perception sphere around the root cap
   double absorptive_weight = 0.0;        // uptake capacity per metre of a newly formed segment (0..1)
   TropismWeights tropisms;
@@ -54,7 +58,9 @@ struct RootParameters {
   double uptake_decay_years = 0.5;       // τ_u in W = w_type · length · exp(-age / τ_u)
   double uptake_rate_per_m = 0.05;       // fraction of vertex moisture one metre of fully active root
                                          // removes per year (scaled by trilinear weight)
-  int max_segments = 20000;              // safety cap per tree: beyond it tips only elongate
+  int max_woody_order = 3;               // laterals and sinkers start only up to this order (main = 0);
+                                         // bounds the framework (fine roots are bounded by their lifespan)
+  int max_segments = 20000;              // safety cap per tree: beyond it apices only elongate
   double min_depth_m = 0.02;             // roots keep at least this depth below the soil surface
 
   const RootTypeParameters& of(RootType type) const { return types[index_of(type)]; }

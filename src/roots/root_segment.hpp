@@ -21,6 +21,7 @@ struct RootSegment {
   int birth_year = 0;           // year the segment formed (age = year − birth_year)
   int axis_birth_year = 0;      // year this root axis started (growth stops after growth_years)
   int parent = -1;              // index of the parent segment in the tree's list; -1 for the first
+  int order = 0;                // 0 the main root, +1 for every new root started (a continuation keeps it)
   std::uint64_t id = 0;         // stable within the tree: names the segment's random streams
   int sector = no_sector;       // path 0..7 where the route of this segment joins the main root
   bool growing = false;         // carries the apex of its axis: elongates and branches next year

@@ -35,8 +35,12 @@ std::vector<RootBud> RootSystem::buds(int year, std::uint64_t seed) const {
   const double mean_bonus = std::accumulate(branching_bonus_.begin(), branching_bonus_.end(), 0.0) / path_count;
   for (int s = 0; s < static_cast<int>(segments_.size()); ++s) {
     const RootSegment& apex = segments_[s];
-    if (!apex.alive || !apex.growing) continue;
+    if (!apex.alive) continue;
     RandomStream random(seed, {static_cast<std::uint64_t>(tree_id_), static_cast<std::uint64_t>(year), organ_root_bud, apex.id});
+    if (!apex.growing) {
+      if (!crowded) sprout_fine_roots(s, random, result);
+      continue;
+    }
     const RootTypeParameters& own = parameters_.of(apex.type);
     const glm::dvec3 heading = apex.direction();
     auto random_horizontal = [&random] {
@@ -52,6 +56,7 @@ std::vector<RootBud> RootSystem::buds(int year, std::uint64_t seed) const {
     for (RootType child : all_root_types) {
       const double base = own.branching_frequency[index_of(child)];
       if (!may_branch_into(apex.type, child) || base <= 0.0) continue;  // the coupling never switches on a rule
+      if (child != RootType::fine && apex.order + 1 > parameters_.max_woody_order) continue;
       const double expected = std::max(0.0, base + bonus);
       const int count = static_cast<int>(expected) + (random.chance(expected - std::floor(expected)) ? 1 : 0);
       for (int n = 0; n < count; ++n)
@@ -61,6 +66,23 @@ std::vector<RootBud> RootSystem::buds(int year, std::uint64_t seed) const {
     }
   }
   return result;
+}
+
+void RootSystem::sprout_fine_roots(int s, RandomStream& random, std::vector<RootBud>& buds) const {
+  const RootSegment& segment = segments_[s];
+  const double base = parameters_.of(segment.type).fine_root_sprouting_per_year;
+  if (base <= 0.0 || !may_branch_into(segment.type, RootType::fine)) return;
+  // The coupling scales sprouting instead of adding to it, so that one path bonus does not start
+  // thousands of fine roots along an old framework.
+  const double bonus = segment.sector == no_sector ? 0.0 : branching_bonus_[segment.sector];
+  const double expected = std::max(0.0, base * (1.0 + bonus));
+  const int count = static_cast<int>(expected) + (random.chance(expected - std::floor(expected)) ? 1 : 0);
+  for (int n = 0; n < count; ++n) {
+    const double azimuth = random.uniform(0.0, 2.0 * pi);
+    buds.push_back({s, RootType::fine, false, n + 1,
+                    rotate_within_range(segment.direction(), parameters_.of(RootType::fine).branching_angle_deg, random),
+                    glm::dvec3(std::cos(azimuth), std::sin(azimuth), 0.0)});
+  }
 }
 
 glm::dvec3 keep_in_soil(const glm::dvec3& start, const glm::dvec3& direction, double length, const SoilGrid& soil,
@@ -94,6 +116,7 @@ void RootSystem::add_segment(const RootBud& bud, const glm::dvec3& direction, in
   segment.birth_year = year;
   segment.axis_birth_year = bud.continuation ? from.axis_birth_year : year;
   segment.parent = bud.from_segment;
+  segment.order = bud.continuation ? from.order : from.order + 1;
   segment.id = next_id_++;
   segment.growing = true;
   if (bud.type == RootType::main) segment.sector = no_sector;

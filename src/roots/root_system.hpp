@@ -4,7 +4,8 @@
 // lifespan, pruned by path, and measured per path for the crown–root coupling (LP_n / WP_n).
 //
 // One year, driven for all trees of a stand by grow_roots() (root_growth.hpp):
-//   1. buds()        — every growing apex proposes its continuation and new roots (its own random stream)
+//   1. buds()        — every growing apex proposes its continuation and new roots, and older woody
+//                       segments may sprout fine roots (each segment draws from its own random stream)
 //   2. the root-contact field is solved for all buds of all trees at once (RootFieldSolver)
 //   3. add_segment() — one segment per bud, in the composed direction V
 //   4. finish_year() — axes past their growth years stop; segments past their lifespan die (with what
@@ -17,6 +18,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "rng/random_stream.hpp"
 #include "roots/root_parameters.hpp"
 #include "roots/root_segment.hpp"
 #include "roots/soil_grid.hpp"
@@ -86,6 +88,7 @@ class RootSystem {
 
  private:
   void remove_dead_and_compact();
+  void sprout_fine_roots(int segment, RandomStream& random, std::vector<RootBud>& buds) const;
 
   int tree_id_;
   glm::dvec3 collar_;

@@ -238,8 +238,12 @@ TEST(RootSystem, BranchingBonusOfAPathAddsBranchesThere) {
     std::vector<RootSystem*> pointers{&trees[0]};
     ReferenceRootFieldSolver solver;
     grow_roots(pointers, soil, solver, 5, 42);
-    return std::ranges::count_if(trees[0].segments(),
-                                 [path](const RootSegment& s) { return s.birth_year == 5 && s.sector == path; });
+    // New roots of the path grown from its own roots (the main root's apex feels the mean bonus of all
+    // paths, so new laterals off the main root are left out).
+    const auto segments = trees[0].segments();
+    return std::ranges::count_if(segments, [path, segments](const RootSegment& s) {
+      return s.birth_year == 5 && s.sector == path && segments[s.parent].type != RootType::main;
+    });
   };
   // The two paths with the most new roots without a bonus: boost the first, watch the second.
   std::array<double, path_count> none{}, boosted{}, suppressed{};
@@ -275,6 +279,48 @@ TEST(RootSystem, UptakeDepletesTheSoilAtYoungTips) {
   EXPECT_NEAR(taken, 0.05 * 0.075, 1e-12);
   EXPECT_LT(soil.moisture(tip), 1.0);
   EXPECT_DOUBLE_EQ(soil.moisture({3.0, 3.0, -2.0}), 1.0);
+}
+
+}  // namespace
+}  // namespace heliostand::roots
+
+namespace heliostand::roots {
+namespace {
+
+TEST(RootSystem, WoodyRootsStopBranchingAtTheMaximumOrder) {
+  RootParameters parameters = tap_rooted_conifer();
+  parameters.max_woody_order = 2;
+  parameters.of(RootType::lateral).branching_frequency[index_of(RootType::lateral)] = 1.0;
+  const RootSystem tree = grown_tree(8, parameters);
+  int second_order = 0;
+  for (const RootSegment& segment : tree.segments()) {
+    if (segment.type == RootType::fine) continue;
+    EXPECT_LE(segment.order, 2);
+    if (segment.order == 2) ++second_order;
+    if (segment.parent >= 0) {
+      const RootSegment& parent = tree.segments()[segment.parent];
+      const bool continuation = parent.type == segment.type && parent.order == segment.order;
+      EXPECT_EQ(segment.order, continuation ? parent.order : parent.order + 1);
+    }
+  }
+  EXPECT_GT(second_order, 0);
+}
+
+TEST(RootSystem, TheFrameworkKeepsRenewingFineRootsAfterItsAxesStop) {
+  RootParameters parameters = tap_rooted_conifer();
+  for (RootType type : {RootType::main, RootType::lateral, RootType::sinker}) parameters.of(type).growth_years = 3.0;
+  auto fine_roots_in_year = [](const RootSystem& tree) {
+    return std::ranges::count_if(tree.segments(),
+                                 [&](const RootSegment& s) { return s.type == RootType::fine && s.birth_year == tree.year(); });
+  };
+  const RootSystem sprouting = grown_tree(12, parameters);
+  EXPECT_EQ(std::ranges::count_if(sprouting.segments(), [](const RootSegment& s) { return s.growing && s.type != RootType::fine; }), 0);
+  EXPECT_GT(fine_roots_in_year(sprouting), 0);
+  for (const RootSegment& segment : sprouting.segments())
+    if (segment.type == RootType::fine) EXPECT_LE(sprouting.age_of(segment), parameters.of(RootType::fine).lifespan_years);
+  for (RootType type : all_root_types) parameters.of(type).fine_root_sprouting_per_year = 0.0;
+  const RootSystem apices_only = grown_tree(12, parameters);
+  EXPECT_EQ(fine_roots_in_year(apices_only), 0);  // the seed's rule alone: no apices, no new fine roots
 }
 
 }  // namespace
