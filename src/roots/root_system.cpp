@@ -185,6 +185,20 @@ std::array<double, path_count> RootSystem::uptake_capacity_by_path() const {
   return by_path;
 }
 
+std::array<double, path_count> RootSystem::available_uptake_by_path(const SoilGrid& soil) const {
+  std::array<double, path_count> by_path{};
+  for (const RootSegment& segment : segments_) {
+    const double capacity = uptake_capacity(segment);
+    if (capacity < 1e-12) continue;
+    const double available = capacity * soil.moisture(segment.end) * soil.nutrient(segment.end);
+    if (segment.sector == no_sector)
+      for (double& path : by_path) path += available / path_count;
+    else
+      by_path[segment.sector] += available;
+  }
+  return by_path;
+}
+
 double RootSystem::take_up(SoilGrid& soil) const {
   double taken = 0.0;
   for (const RootSegment& segment : segments_) {

@@ -78,6 +78,11 @@ class RootSystem {
   // Σ W_j per path (before seed 003's coefficient τ); the main root's own capacity is split evenly.
   std::array<double, path_count> uptake_capacity_by_path() const;
 
+  // The same weighted by what the soil offers at each segment's tip (moisture × nutrient, both 0..1):
+  // seed 003's single "water and nutrient" level of the voxels, so that richer soil (Fig. 13, 0.5 → 1.0)
+  // gives the crown more from the same roots.
+  std::array<double, path_count> available_uptake_by_path(const SoilGrid& soil) const;
+
   // Removes segments by the rule and everything they carry; returns how many were removed.
   int prune(const RootPruning& rule);
 

@@ -325,3 +325,22 @@ TEST(RootSystem, TheFrameworkKeepsRenewingFineRootsAfterItsAxesStop) {
 
 }  // namespace
 }  // namespace heliostand::roots
+
+namespace heliostand::roots {
+namespace {
+
+TEST(RootSystem, AvailableUptakeScalesWithTheSoilsWaterAndNutrients) {
+  const RootSystem tree = grown_tree(5);
+  SoilGrid poor = big_soil(), rich = big_soil();  // moisture 1.0, nutrient 0.5
+  rich.fill_uniform(SoilField::nutrient, 1.0);
+  const auto capacity = tree.uptake_capacity_by_path();
+  const auto from_poor = tree.available_uptake_by_path(poor);
+  const auto from_rich = tree.available_uptake_by_path(rich);
+  for (int path = 0; path < path_count; ++path) {
+    EXPECT_NEAR(from_poor[path], 0.5 * capacity[path], 1e-12);
+    EXPECT_NEAR(from_rich[path], capacity[path], 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace heliostand::roots

@@ -7,6 +7,8 @@ namespace heliostand::roots::validation {
 RootExperimentResult run_experiment(const RootExperiment& experiment, RootFieldSolver& solver) {
   RootExperimentResult result{{}, SoilGrid(experiment.soil, 1.0, 0.5)};
   if (experiment.moisture_gradient_x) result.soil.fill_gradient(SoilField::moisture, 0, 1.0, 0.0);
+  if (!experiment.moisture_layer_values.empty())
+    result.soil.fill_layers(SoilField::moisture, experiment.moisture_layer_bottoms_m, experiment.moisture_layer_values);
   constexpr int planting_year = 0;
   for (std::size_t t = 0; t < experiment.collars.size(); ++t)
     result.trees.emplace_back(static_cast<int>(t), experiment.collars[t], experiment.parameters, planting_year);

@@ -18,6 +18,8 @@ struct RootExperiment {
   RootParameters parameters = tap_rooted_conifer();
   SoilGridGeometry soil{{-4.0, -4.0, -3.0}, 0.25, {32, 32, 12}};  // 8 m × 8 m × 3 m, surface at z = 0
   bool moisture_gradient_x = false;  // seed Fig. 4: moisture 1.0 at the west face → 0.0 at the east face
+  std::vector<double> moisture_layer_bottoms_m;  // optional layered moisture (SoilGrid::fill_layers)
+  std::vector<double> moisture_layer_values;
   std::vector<glm::dvec3> collars{{0.0, 0.0, 0.0}};
   int years = 15;                     // the seed's 15 generations
   std::uint64_t seed = 1;
