@@ -1,4 +1,4 @@
-// Root-contact field, OpenCL vs reference, on a stand-sized root system: 10 × 10 tap-rooted conifers at
+// Root-contact field, OpenCL vs reference, on a stand-sized root system: 12 × 12 tap-rooted conifers at
 // 2 m spacing grown 15 years (≈ 10^5 segments). Two query sets: the growing apices of one year with 16
 // moisture probes each (what grow_roots asks), and every segment end (a heavier, 10^5-apex case).
 //   build/heliostand_benchmarks --benchmark_filter=RootField
@@ -18,7 +18,7 @@ using namespace heliostand;
 using namespace heliostand::roots;
 
 struct BenchmarkStand {
-  SoilGrid soil{{{-11.0, -11.0, -3.0}, 0.25, {88, 88, 12}}, 1.0, 0.5};
+  SoilGrid soil{{{-13.0, -13.0, -3.0}, 0.25, {104, 104, 12}}, 1.0, 0.5};
   std::vector<RootSystem> trees;
   StandSegments segments;
   std::vector<RootTipQuery> apices, every_end;
@@ -28,9 +28,9 @@ struct BenchmarkStand {
 const BenchmarkStand& stand() {
   static const std::unique_ptr<BenchmarkStand> built = [] {
     auto s = std::make_unique<BenchmarkStand>();
-    for (int i = 0; i < 10; ++i)
-      for (int j = 0; j < 10; ++j)
-        s->trees.emplace_back(10 * i + j, glm::dvec3(-9.0 + 2.0 * i, -9.0 + 2.0 * j, 0.0), tap_rooted_conifer(), 0);
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j)
+        s->trees.emplace_back(12 * i + j, glm::dvec3(-11.0 + 2.0 * i, -11.0 + 2.0 * j, 0.0), tap_rooted_conifer(), 0);
     std::vector<RootSystem*> pointers;
     for (RootSystem& tree : s->trees) pointers.push_back(&tree);
     ReferenceRootFieldSolver solver;
