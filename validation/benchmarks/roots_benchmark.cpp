@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "rng/random_stream.hpp"
+#ifdef HELIOSTAND_HAVE_OPENCL
 #include "roots/opencl_root_field.hpp"
+#endif
 #include "roots/reference_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
 
@@ -76,6 +78,7 @@ void BM_RootField_Reference(benchmark::State& state) {
   run(state, solver, state.range(0) != 0);
 }
 
+#ifdef HELIOSTAND_HAVE_OPENCL
 void BM_RootField_OpenCL(benchmark::State& state) {
   std::unique_ptr<OpenCLRootFieldSolver> solver;
   try {
@@ -89,5 +92,6 @@ void BM_RootField_OpenCL(benchmark::State& state) {
 
 BENCHMARK(BM_RootField_Reference)->ArgName("every_end")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RootField_OpenCL)->ArgName("every_end")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
 
 }  // namespace
