@@ -1,0 +1,42 @@
+#pragma once
+// One year of root growth for every tree of a stand (seed 003 + MODEL.md §5): all apices perceive the
+// soil and the roots of ALL trees (as they stood at the start of the year, so the result does not depend
+// on the order trees are visited), grow one segment each, age, die, and take up moisture and nutrients.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "rng/random_stream.hpp"
+#include "roots/root_field_solver.hpp"
+#include "roots/root_system.hpp"
+#include "roots/soil_grid.hpp"
+
+namespace heliostand::roots {
+
+struct RootYearSummary {
+  int new_segments = 0;
+  int removed_segments = 0;          // died of old age (with what they carried)
+  double moisture_taken = 0.0;       // Σ over vertices of moisture removed by uptake
+  std::vector<double> moisture_taken_by_tree;  // in the order of `trees`
+};
+
+// Grows every tree one year: buds → root-contact field (one solve for the stand) → new segments →
+// finish_year → uptake. Soil recharge is the caller's step (SoilGrid::recharge), once per year.
+RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
+                           std::uint64_t seed);
+
+// K probe offsets (units of the perception radius) for one bud: K/2 directions uniform on the sphere at
+// radius fractions uniform in the ball, each cast together with its opposite ("antithetic" pairs), so a
+// uniform moisture field pulls nowhere and only the moisture difference across the sphere steers.
+std::vector<glm::dvec3> draw_moisture_probes(RandomStream& random, int count);
+
+// All living segments of the stand, tree after tree; `offsets[t]` is tree t's first index.
+struct StandSegments {
+  std::vector<RootSegmentLine> lines;
+  std::vector<int> offsets;
+};
+StandSegments gather_segments(std::span<RootSystem* const> trees);
+
+}  // namespace heliostand::roots

@@ -1,0 +1,123 @@
+// The OpenCL root-contact field against the reference on grown root systems of several trees (float on
+// the device, double in the reference). Stated tolerance: per apex, the same number of contacts and
+// every component of Vt within 1e-3 (a sum of up to ~100 unit vectors in float) and of Vw within 1e-4
+// (16 probes of moisture ≤ 1). Apices with a segment within 1e-4 m of the sphere's surface are left out
+// of the contact comparison: there float and double may legitimately disagree on "inside".
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "rng/random_stream.hpp"
+#include "roots/opencl_root_field.hpp"
+#include "roots/reference_root_field_solver.hpp"
+#include "roots/root_growth.hpp"
+
+namespace heliostand::roots {
+namespace {
+
+struct GrownStand {
+  SoilGrid soil{{{-4.0, -4.0, -3.0}, 0.25, {32, 32, 12}}, 1.0, 0.5};
+  std::vector<RootSystem> trees;
+};
+
+GrownStand grown_stand(int years, std::uint64_t seed) {
+  GrownStand stand;
+  stand.soil.fill_gradient(SoilField::moisture, 0, 1.0, 0.1);
+  for (int t = 0; t < 3; ++t)
+    stand.trees.emplace_back(t, glm::dvec3(-1.0 + 1.0 * t, 0.3 * t, 0.0), tap_rooted_conifer(), 0);
+  std::vector<RootSystem*> pointers;
+  for (RootSystem& tree : stand.trees) pointers.push_back(&tree);
+  ReferenceRootFieldSolver solver;
+  for (int year = 1; year <= years; ++year) grow_roots(pointers, stand.soil, solver, year, seed);
+  return stand;
+}
+
+std::unique_ptr<OpenCLRootFieldSolver> make_opencl_or_skip() {
+  try {
+    return std::make_unique<OpenCLRootFieldSolver>();
+  } catch (const std::runtime_error&) {
+    return nullptr;
+  }
+}
+
+TEST(OpenCLRootFieldSolver, MatchesTheReferenceOnGrownRootSystems) {
+  auto opencl = make_opencl_or_skip();
+  if (!opencl) GTEST_SKIP() << "no OpenCL device";
+  ReferenceRootFieldSolver reference;
+  for (std::uint64_t seed : {1u, 2u}) {
+    GrownStand stand = grown_stand(10, seed);
+    std::vector<RootSystem*> pointers;
+    for (RootSystem& tree : stand.trees) pointers.push_back(&tree);
+    const StandSegments segments = gather_segments(pointers);
+    // Every segment end is an apex (as in growth: it excludes its own segment and that one's parent).
+    std::vector<RootTipQuery> tips;
+    std::vector<glm::dvec3> probes;
+    constexpr int probes_per_tip = 16;
+    RandomStream random(seed, {99});
+    for (std::size_t t = 0; t < stand.trees.size(); ++t)
+      for (std::size_t s = 0; s < stand.trees[t].segments().size(); ++s) {
+        const RootSegment& segment = stand.trees[t].segments()[s];
+        RootTipQuery tip;
+        tip.position = segment.end;
+        tip.perception_radius_m = random.uniform(0.1, 0.4);
+        tip.excluded[0] = segments.offsets[t] + static_cast<int>(s);
+        tip.excluded[1] = segment.parent >= 0 ? segments.offsets[t] + segment.parent : -1;
+        tips.push_back(tip);
+        const auto drawn = draw_moisture_probes(random, probes_per_tip);
+        probes.insert(probes.end(), drawn.begin(), drawn.end());
+      }
+    ASSERT_GT(tips.size(), 500u);
+    RootFieldInput input{segments.lines, tips, probes, probes_per_tip, &stand.soil};
+    const auto expected = reference.solve(input);
+    const auto actual = opencl->solve(input);
+    ASSERT_EQ(actual.size(), expected.size());
+
+    int compared = 0, with_contacts = 0;
+    for (std::size_t t = 0; t < tips.size(); ++t) {
+      for (int axis = 0; axis < 3; ++axis)
+        ASSERT_NEAR(actual[t].moisture_pull[axis], expected[t].moisture_pull[axis], 1e-4) << "apex " << t;
+      bool on_the_edge = false;  // a segment within 1e-4 m of the sphere's surface
+      for (std::size_t s = 0; s < segments.lines.size(); ++s) {
+        const double distance = glm::length(nearest_point_on_segment(tips[t].position, segments.lines[s]) - tips[t].position);
+        if (std::abs(distance - tips[t].perception_radius_m) < 1e-5 || std::abs(distance - touching_distance_m) < 1e-6)
+          on_the_edge = true;
+      }
+      if (on_the_edge) continue;
+      ++compared;
+      if (expected[t].contacts > 0) ++with_contacts;
+      ASSERT_EQ(actual[t].contacts, expected[t].contacts) << "apex " << t;
+      for (int axis = 0; axis < 3; ++axis)
+        ASSERT_NEAR(actual[t].contact_avoidance[axis], expected[t].contact_avoidance[axis], 1e-3) << "apex " << t;
+    }
+    EXPECT_GT(compared, static_cast<int>(0.99 * tips.size()));
+    EXPECT_GT(with_contacts, compared / 2);  // the comparison is not vacuous
+  }
+}
+
+TEST(OpenCLRootFieldSolver, GrowsTheSameRootSystemsAsTheReference) {
+  auto opencl = make_opencl_or_skip();
+  if (!opencl) GTEST_SKIP() << "no OpenCL device";
+  ReferenceRootFieldSolver reference;
+  auto grow_with = [](RootFieldSolver& solver) {
+    GrownStand stand;
+    stand.soil.fill_gradient(SoilField::moisture, 0, 1.0, 0.1);
+    for (int t = 0; t < 2; ++t) stand.trees.emplace_back(t, glm::dvec3(-0.5 + t, 0.0, 0.0), tap_rooted_conifer(), 0);
+    std::vector<RootSystem*> pointers{&stand.trees[0], &stand.trees[1]};
+    for (int year = 1; year <= 6; ++year) grow_roots(pointers, stand.soil, solver, year, 5);
+    return stand;
+  };
+  const GrownStand a = grow_with(reference), b = grow_with(*opencl);
+  for (std::size_t t = 0; t < a.trees.size(); ++t) {
+    const auto sa = a.trees[t].segments(), sb = b.trees[t].segments();
+    ASSERT_EQ(sa.size(), sb.size());  // branching never depends on the backend
+    double worst = 0.0;
+    for (std::size_t s = 0; s < sa.size(); ++s) worst = std::max(worst, glm::length(sa[s].end - sb[s].end));
+    EXPECT_LT(worst, 1e-3) << "tree " << t;  // float directions, compounded over 6 years
+  }
+}
+
+}  // namespace
+}  // namespace heliostand::roots

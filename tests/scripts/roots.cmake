@@ -1,0 +1,18 @@
+# Seed-003 root validation (validation/roots/): the tropism demonstrations as measured quantities,
+# averaged over seeds (GoogleTest, each TEST a CTest), and the rooting-depth report against
+# Jackson et al. (1996) (a program that writes a Markdown table; registered so it keeps running).
+file(GLOB HELIOSTAND_ROOTS_VALIDATION_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/validation/roots/*_validation.cpp)
+add_library(heliostand_roots_experiments STATIC ${PROJECT_SOURCE_DIR}/validation/roots/root_experiments.cpp)
+target_include_directories(heliostand_roots_experiments PUBLIC ${PROJECT_SOURCE_DIR}/validation/roots)
+target_link_libraries(heliostand_roots_experiments PUBLIC heliostand_core)
+
+add_executable(heliostand_roots_validation ${HELIOSTAND_ROOTS_VALIDATION_SOURCES})
+target_link_libraries(heliostand_roots_validation PRIVATE heliostand_roots_experiments GTest::gtest GTest::gtest_main)
+gtest_discover_tests(heliostand_roots_validation
+  DISCOVERY_TIMEOUT 60
+  PROPERTIES ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+
+add_executable(heliostand_roots_depth_report ${PROJECT_SOURCE_DIR}/validation/roots/report/depth_profile_report.cpp)
+target_link_libraries(heliostand_roots_depth_report PRIVATE heliostand_roots_experiments)
+add_test(NAME RootDepthProfileReport
+  COMMAND heliostand_roots_depth_report ${PROJECT_BINARY_DIR}/validation/roots_depth_profile.md)
