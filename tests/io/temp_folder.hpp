@@ -1,5 +1,8 @@
 #pragma once
-// A fresh, empty folder under the build tree for one test, removed afterwards.
+// A fresh, empty folder under the build tree for one test, removed afterwards. The folder name carries
+// the running test's name, so tests sharing a fixture can run in parallel (ctest -j) without racing.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 
@@ -8,7 +11,7 @@ namespace heliostand::testing {
 class TempFolder {
  public:
   explicit TempFolder(const std::string& name)
-      : path_(std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / name) {
+      : path_(std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / (name + "." + running_test())) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -19,6 +22,10 @@ class TempFolder {
   const std::filesystem::path& path() const { return path_; }
 
  private:
+  static std::string running_test() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return info == nullptr ? "suite" : std::string(info->test_suite_name()) + "." + info->name();
+  }
   std::filesystem::path path_;
 };
 
