@@ -106,7 +106,8 @@ std::vector<double> corner_angle_jitter(int corners, RandomStream& rng) {
   return c;  // |c| ≤ 5° and 360°/M ≥ 10° for M ≤ 36: θ_m stays non-decreasing
 }
 
-Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& chart, const HollowSpec& spec) {
+Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& chart, const HollowSpec& spec,
+                    bool limit_crossings) {
   const int n = static_cast<int>(outline_xy.size());
   const int corners = spec.polygon_corners;
   Callus callus;
@@ -144,7 +145,7 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
       ring.jitter[m] = m == 0 ? 1.0 : rng.uniform(0.9, 1.1);
     }
     // Across the wound, two rolls may not overlap: each keeps within 40 % of the gap.
-    const double across = 0.4 * clearance[j];
+    const double across = limit_crossings ? 0.4 * clearance[j] : 1e30;
 
     // Corner 0, the foot: on the surface, r straight out from the wound, where the bark joins. The bulge E_j
     // raises the roll but does not widen its footprint: a footprint that widened with E_j would make the
@@ -172,15 +173,16 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
           ring.jitter[m] * (width * glm::dot(turned, t) * t + height * glm::dot(turned, up) * up);
       const double wanted = glm::length(wanted_offset);
       const glm::dvec3 d = wanted_offset / wanted;
-      const double allowed =
-          std::min({wanted, across, plane_limit(j, d, v, axis), bend_limit(j, d, v, axis, arc, skip)});
+      const double allowed = limit_crossings ? std::min({wanted, across, plane_limit(j, d, v, axis),
+                                                         bend_limit(j, d, v, axis, arc, skip)})
+                                             : wanted;
       ring.limit_scale = std::min(ring.limit_scale, allowed / wanted);
       ring.radius[m] = allowed;
       ring.directions[m] = d;
       ring.corners[m] = v[j] + allowed * d;
     }
   }
-  separate_polygons(callus);
+  if (limit_crossings) separate_polygons(callus);
   return callus;
 }
 

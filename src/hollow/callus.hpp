@@ -47,6 +47,9 @@ std::vector<double> corner_angle_jitter(int corners, RandomStream& rng);
 // polygons j and j+1) that crosses another stretch, until none cross. Returns the number of crossing pairs left (0 when it succeeded).
 int separate_polygons(Callus& callus, int max_rounds = 40);
 
-Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& chart, const HollowSpec& spec);
+// limit_crossings = false gives the seed's rolls (no plane, bend, across-the-wound or band-crossing limits),
+// kept to show the limit being lifted.
+Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& chart, const HollowSpec& spec,
+                    bool limit_crossings = true);
 
 }  // namespace heliostand::hollow

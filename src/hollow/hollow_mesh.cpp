@@ -205,7 +205,7 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   model.chart_radius = chart.reference_radius();
   const std::vector<glm::dvec2> plane_loop = sample_outline(spec.width_m, spec.wound_height_m, spec.outline_step_m);
   model.outline_xy = place_outline(plane_loop, chart, spec.placement);
-  model.callus = build_callus(model.outline_xy, chart, spec);
+  model.callus = build_callus(model.outline_xy, chart, spec, options.limit_callus);
   const Callus& callus = model.callus;
   const int rings = static_cast<int>(callus.rings.size());
 

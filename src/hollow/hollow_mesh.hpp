@@ -50,6 +50,7 @@ struct HollowModel {
 
 struct BuildOptions {
   bool follow_convexity = true;  // subdivide stem/bark faces until within surface_tolerance_m (off: seed)
+  bool limit_callus = true;      // keep callus polygons from crossing (off: seed)
 };
 
 // Throws InputError (field kind "field") when validate() reports problems.

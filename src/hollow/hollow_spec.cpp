@@ -15,6 +15,7 @@ namespace {
 // Cylindrical placement bends the bark flow around the wound inside a band that may wrap the whole stem;
 // the flow stays one-to-one while the wound's half-width (with callus) is below 80 % of half the circumference.
 constexpr double max_wrap_fraction = 0.8;
+constexpr double widest_outline_fraction = 12.5 / 32.0;
 
 struct Problems {
   std::vector<InputProblem> list;
@@ -79,12 +80,16 @@ void check_on_trunk(const HollowSpec& s, const TrunkSurface& trunk, Problems& p)
                                    "placement (seed 004) cannot wrap a wound around half the stem or more; use "
                                    "cylindrical placement", s.width_m, diameter));
   } else {
-    const double half_round = pi * thinnest;
-    const double reach = s.width_m / 2.0 + 2.0 * callus + s.bark_line_spacing_m;
+    // The outline's widest point is K(1/2): x′ = (5/4 + 5 + 5 + 5/4)/32 · W = 0.390625 W from its centre line.
+    // The bark flow must fit that, the callus foot r and one bark line within 80 % of half the circumference,
+    // measured at the hollow's centre radius (the chart's angles are the same at every height).
+    const double half_round = pi * trunk.radius(s.height_m);
+    const double foot = s.callus_radius_m * trunk.flare_factor(std::max(s.height_m - s.wound_height_m / 2.0, 0.0));
+    const double reach = widest_outline_fraction * s.width_m + foot + s.bark_line_spacing_m;
     if (reach > max_wrap_fraction * half_round)
-      p.add("width_m", fmt::format("{} m is too wide for this stem: half the wound plus callus and one bark line "
-                                   "({:.3f} m) must stay within 80 % of half the circumference ({:.3f} m)",
-                                   s.width_m, reach, max_wrap_fraction * half_round));
+      p.add("width_m", fmt::format("{} m is too wide for this stem: the wound's widest half (0.39·W) plus callus "
+                                   "foot and one bark line ({:.3f} m) must stay within 80 % of half the "
+                                   "circumference ({:.3f} m)", s.width_m, reach, max_wrap_fraction * half_round));
   }
 }
 
