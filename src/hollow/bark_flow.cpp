@@ -86,7 +86,7 @@ std::vector<double> wound_rows(const WoundProfile& profile, double reach_step) {
 double seed_bark_lift(double mean_callus_radius, double callus_radius, double distance) {
   const double seed_lift = seed_unit_m * seed_unit_m * (mean_callus_radius / (2.0 * callus_radius)) /
                            std::max(distance, 1e-9);
-  return std::min(seed_lift, 0.5 * mean_callus_radius);
+  return std::min(seed_lift, 0.5 * callus_radius);
 }
 
 }  // namespace heliostand::hollow

@@ -59,7 +59,8 @@ class BarkFlow {
 std::vector<double> wound_rows(const WoundProfile& profile, double reach_step);
 
 // Seed eq. 3.18: bark near the wound rises by (R_j / 2r) / |V_j − b| (seed units) along the ray from B.
-// In metres: 1e-4 · (R_j / 2r) / d, capped at half the callus radius so the bark never overtops the roll.
+// In metres: 1e-4 · (R_j / 2r) / d, capped at r/2 so that the bark stays below the roll it rolls onto
+// (the roll is at least r high) and its rise stays gentle where the bulge makes R_j large.
 double seed_bark_lift(double mean_callus_radius, double callus_radius, double distance);
 
 }  // namespace heliostand::hollow

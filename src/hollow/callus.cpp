@@ -150,7 +150,8 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
     // Corner 0, the foot: on the surface, r straight out from the wound, where the bark joins. The bulge E_j
     // raises the roll but does not widen its footprint: a footprint that widened with E_j would make the
     // foot dip beside the apexes (E_j grows fastest there), and the bark could no longer meet it row by row.
-    const double foot_radius = std::min(spec.callus_radius_m * ring.flare, across);
+    // (The foot lies on the outer side of the rim, so the across-the-wound clearance does not bind it.)
+    const double foot_radius = spec.callus_radius_m * ring.flare;
     ring.foot_xy = outline_xy[j] + foot_radius * normals2d[j];
     const glm::dvec3 foot = chart.point(ring.foot_xy);
     // T_j: the direction to the foot, made perpendicular to the polygon normal; the polygon then turns from
@@ -187,15 +188,18 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
 }
 
 namespace {
-// The roll between polygons j and j+1 as the mesh will carry it (two triangles per corner step).
-void band_triangles(const Callus& callus, int j, std::vector<std::array<glm::dvec3, 3>>& out) {
+// The roll between polygons j and j+1 as the mesh will carry it (two triangles per corner step), each
+// corner named by (ring, corner) so that triangles sharing a corner can be left out of the comparison.
+using Corner = std::pair<int, int>;
+using BandTriangle = std::array<Corner, 3>;
+
+void band_triangles(const Callus& callus, int j, std::vector<BandTriangle>& out) {
   const int n = static_cast<int>(callus.rings.size());
-  const auto& a = callus.rings[j].corners;
-  const auto& b = callus.rings[(j + 1) % n].corners;
+  const int k = (j + 1) % n;
   out.clear();
-  for (std::size_t m = 0; m + 1 < a.size(); ++m) {
-    out.push_back({a[m], b[m], b[m + 1]});
-    out.push_back({a[m], b[m + 1], a[m + 1]});
+  for (int m = 0; m + 1 < static_cast<int>(callus.rings[j].corners.size()); ++m) {
+    out.push_back({Corner{j, m}, Corner{k, m}, Corner{k, m + 1}});
+    out.push_back({Corner{j, m}, Corner{k, m + 1}, Corner{j, m + 1}});
   }
 }
 
@@ -215,12 +219,18 @@ Box band_box(const Callus& callus, int j) {
 }
 
 bool bands_cross(const Callus& callus, int j, int k) {
-  thread_local std::vector<std::array<glm::dvec3, 3>> first, second;
+  thread_local std::vector<BandTriangle> first, second;
   band_triangles(callus, j, first);
   band_triangles(callus, k, second);
+  auto at = [&](Corner c) { return callus.rings[c.first].corners[c.second]; };
   for (const auto& s : first)
-    for (const auto& t : second)
-      if (triangles_intersect(s[0], s[1], s[2], t[0], t[1], t[2])) return true;
+    for (const auto& t : second) {
+      bool shared = false;
+      for (const Corner& a : s)
+        for (const Corner& b : t) shared = shared || a == b;
+      if (shared) continue;
+      if (triangles_intersect(at(s[0]), at(s[1]), at(s[2]), at(t[0]), at(t[1]), at(t[2]))) return true;
+    }
   return false;
 }
 
@@ -229,14 +239,14 @@ double reach(const CallusRing& ring) { return *std::max_element(ring.radius.begi
 
 int separate_polygons(Callus& callus, int max_rounds) {
   const int n = static_cast<int>(callus.rings.size());
-  // Radii only shrink, so the bands close enough to cross can be listed once. Bands j and k that share a
-  // polygon (|j − k| ≤ 1 around the loop) touch by construction and are not compared.
+  // Radii only shrink, so the bands close enough to cross can be listed once. A band is also compared with
+  // itself and its neighbours (triangles sharing a corner left out): where a tight bend squeezes some corners
+  // much more than others, a band can fold over itself.
   std::vector<std::pair<int, int>> close;
   std::vector<double> band_reach(n);
   for (int j = 0; j < n; ++j) band_reach[j] = std::max(reach(callus.rings[j]), reach(callus.rings[(j + 1) % n]));
   for (int j = 0; j < n; ++j)
-    for (int k = j + 2; k < n; ++k) {
-      if (j == 0 && k == n - 1) continue;
+    for (int k = j; k < n; ++k) {
       const double step = glm::length(callus.rings[(j + 1) % n].centre - callus.rings[j].centre) +
                           glm::length(callus.rings[(k + 1) % n].centre - callus.rings[k].centre);
       if (glm::length(callus.rings[j].centre - callus.rings[k].centre) < band_reach[j] + band_reach[k] + step)

@@ -216,8 +216,10 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   // The bark patch: the seed's 2W × 2H, widened where the callus needs room for the flow to stay one-to-one.
   const double half_round = chart.half_round();
   const double patch_x = std::min(half_round, std::max(spec.width_m, 2.5 * profile.max_reach()));
-  const double patch_up = std::min(spec.wound_height_m, 0.95 * trunk.tree_height() - spec.height_m);
-  const double patch_down = std::min(spec.wound_height_m, spec.height_m);
+  // Vertically the patch must hold the callus foot with room to spare (flat wounds: H is less than the roll).
+  const double patch_up = std::min(std::max(spec.wound_height_m, 1.5 * profile.y_max()),
+                                   0.95 * trunk.tree_height() - spec.height_m);
+  const double patch_down = std::min(std::max(spec.wound_height_m, -1.5 * profile.y_min()), spec.height_m);
   model.patch_half_width = patch_x;
   const BarkFlow flow(profile, patch_x);
 
