@@ -122,7 +122,7 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
   for (int j = 0; j < n; ++j)
     axis[j] = glm::normalize(glm::normalize(v[j] - v[wrap(j - 1, n)]) + glm::normalize(v[wrap(j + 1, n)] - v[j]));
   const std::vector<double> aligned = vertical_alignment(v);
-  const std::vector<glm::dvec2> normals2d = outward_normals(outline_xy);
+  const std::vector<glm::dvec2> normals2d = outward_normals(outline_xy, 2.0 * chart.half_round());
   const double nominal = 1.1 * spec.callus_radius_m + spec.bulge_m;
   const int skip = static_cast<int>(std::ceil(3.0 * nominal / spec.outline_step_m)) + plane_neighbours;
   const std::vector<double> clearance = across_clearance(v, skip);

@@ -71,11 +71,13 @@ int bottom_vertex(const std::vector<glm::dvec2>& loop) {
                                            [](auto& a, auto& b) { return a.y < b.y; }) - loop.begin());
 }
 
-std::vector<glm::dvec2> outward_normals(const std::vector<glm::dvec2>& loop) {
+std::vector<glm::dvec2> outward_normals(const std::vector<glm::dvec2>& loop, double period) {
   const int n = static_cast<int>(loop.size());
   std::vector<glm::dvec2> normals(n);
   for (int j = 0; j < n; ++j) {
-    const glm::dvec2 tangent = glm::normalize(loop[(j + 1) % n] - loop[(j + n - 1) % n]);
+    glm::dvec2 step = loop[(j + 1) % n] - loop[(j + n - 1) % n];
+    if (period > 0.0) step.x = std::remainder(step.x, period);
+    const glm::dvec2 tangent = glm::normalize(step);
     normals[j] = {tangent.y, -tangent.x};  // right of the direction of travel = outside for a CCW loop
   }
   return normals;

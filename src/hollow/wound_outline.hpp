@@ -32,7 +32,8 @@ std::vector<glm::dvec2> sample_outline(double width, double height, double step)
 int top_vertex(const std::vector<glm::dvec2>& loop);
 int bottom_vertex(const std::vector<glm::dvec2>& loop);
 
-// Outward unit normals of a counter-clockwise loop (central differences).
-std::vector<glm::dvec2> outward_normals(const std::vector<glm::dvec2>& loop);
+// Outward unit normals of a counter-clockwise loop (central differences): the right of the direction of
+// travel. With period > 0, x is periodic (a rim running once around the stem in the stem chart).
+std::vector<glm::dvec2> outward_normals(const std::vector<glm::dvec2>& loop, double period = 0.0);
 
 }  // namespace heliostand::hollow

@@ -10,6 +10,7 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "hollow/broken_stem.hpp"
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/vtp_writer.hpp"
 
@@ -68,6 +69,16 @@ TEST(FigureMeshes, WriteSeedLikeFiguresAsVtp) {
     for (const char* array : {"part", "callus_thickness_m", "bark_shift_m", "bark_lift_m", "bark_line"})
       EXPECT_NE(poly->GetPointData()->GetArray(array), nullptr) << f.name << " lacks " << array;
   }
+  // Beyond the seed: a hollow all around a broken stem (oblique break).
+  BrokenStemSpec broken;
+  broken.break_height_m = 4.0;
+  broken.break_tilt_m = 0.25;
+  broken.callus_radius_m = 0.03;
+  broken.bulge_m = 0.02;
+  broken.seed = 2024;
+  write_vtp(build_broken_stem(broken, TrunkSurface::seed001_taper(30.0, 15.0)).mesh,
+            (out / "beyond_broken_stem_ring.vtp").string());
+  EXPECT_TRUE(std::filesystem::exists(out / "beyond_broken_stem_ring.vtp"));
   // A stem without a hollow, for comparison.
   write_vtp(build_trunk_mesh(TrunkSurface::seed001_taper(30.0, 15.0)), (out / "stem_without_hollow.vtp").string());
   EXPECT_TRUE(std::filesystem::exists(out / "stem_without_hollow.vtp"));
