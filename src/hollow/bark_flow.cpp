@@ -57,8 +57,13 @@ BarkFlow::BarkFlow(const WoundProfile& profile, double patch_half_width)
 
 double BarkFlow::displaced(double x, double y) const {
   if (x == 0.0) return 0.0;
+  return displaced(x, x < 0.0 ? profile_->left_reach(y) : 0.0, x > 0.0 ? profile_->right_reach(y) : 0.0);
+}
+
+double BarkFlow::displaced(double x, double left_reach, double right_reach) const {
+  if (x == 0.0) return 0.0;
   const double s = std::min(std::abs(x) / half_width_, 1.0);
-  const double reach = x < 0.0 ? profile_->left_reach(y) : profile_->right_reach(y);
+  const double reach = x < 0.0 ? left_reach : right_reach;
   const double shift = reach * std::pow(1.0 - s, exponent_);
   return x < 0.0 ? x - shift : x + shift;
 }

@@ -46,6 +46,8 @@ class BarkFlow {
   double exponent() const { return exponent_; }
   // Position of the line that starts at x, at height y (x = 0 is the split line through the top vertex).
   double displaced(double x, double y) const;
+  // The same with the wound's reach at that height already known (profile.left_reach(y), right_reach(y)).
+  double displaced(double x, double left_reach, double right_reach) const;
 
  private:
   const WoundProfile* profile_;

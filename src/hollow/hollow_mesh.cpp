@@ -86,6 +86,10 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   std::vector<double> rows(n_rows);
   for (int k = 0; k < n_rows; ++k) rows[k] = heights[k] - spec.height_m;
 
+  // The wound's reach on either side, once per row (the flow needs it for every line).
+  std::vector<double> reach_left(n_rows), reach_right(n_rows);
+  for (int k = 0; k < n_rows; ++k) reach_left[k] = profile.left_reach(rows[k]), reach_right[k] = profile.right_reach(rows[k]);
+
   Builder b;
   std::vector<std::vector<int>> grid(n_cols, std::vector<int>(n_rows, -1));
   for (int c = 0; c < n_cols; ++c) {
@@ -94,7 +98,7 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
       const bool cut = c == mid && y > profile.y_min() && y < profile.y_max();
       if (cut) continue;  // the split line's fibres are cut by the wound
       const bool patch = around.in_patch({cols[c], y});
-      const double x = patch && c < first_back ? flow.displaced(cols[c], y) : cols[c];
+      const double x = patch && c < first_back ? flow.displaced(cols[c], reach_left[k], reach_right[k]) : cols[c];
       const double lift = patch ? around.lift({x, y}) : 0.0;
       grid[c][k] = b.add(chart.point({x, y}, lift), patch ? MeshPart::bark : MeshPart::trunk, true, {x, y},
                          x - cols[c], lift, c);
@@ -168,14 +172,15 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   lines.split_column = 0;
   lines.spacing = dx;
   for (int c = 0; c < first_back; ++c) lines.x.push_back(cols[c]);
+  std::vector<int> patch_rows;
   for (int k = 0; k < n_rows; ++k)
-    if (rows[k] >= -patch_down - 1e-9 && rows[k] <= patch_up + 1e-9) lines.y.push_back(rows[k]);
+    if (rows[k] >= -patch_down - 1e-9 && rows[k] <= patch_up + 1e-9) lines.y.push_back(rows[k]), patch_rows.push_back(k);
   for (int c = 0; c < first_back; ++c) {
     if (cols[c] == 0.0) lines.split_column = static_cast<int>(lines.X.size());
     std::vector<double> X;
-    for (double y : lines.y) {
-      const bool cut = cols[c] == 0.0 && y > profile.y_min() && y < profile.y_max();
-      X.push_back(cut ? nan : flow.displaced(cols[c], y));
+    for (int k : patch_rows) {
+      const bool cut = cols[c] == 0.0 && rows[k] > profile.y_min() && rows[k] < profile.y_max();
+      X.push_back(cut ? nan : flow.displaced(cols[c], reach_left[k], reach_right[k]));
     }
     lines.X.push_back(std::move(X));
   }

@@ -135,13 +135,21 @@ double Surroundings::lift(glm::dvec2 xy) const {
   const double across = full_round ? 0.0 : std::abs(x) / patch_x;
   const double s = std::max(across, xy.y >= 0.0 ? xy.y / patch_up : -xy.y / patch_down);
   if (s >= 1.0) return 0.0;
+  // Nearest rim vertex: every 16th vertex first, then the neighbourhood of the best one (the rim is sampled
+  // every millimetre, the bark lies centimetres away, so the coarse pass cannot miss the right stretch).
+  const int n = static_cast<int>(outline->size());
+  auto distance_to = [&](int j) {
+    const glm::dvec2& v = (*outline)[((j % n) + n) % n];
+    return glm::length(glm::dvec2{wrapped(v.x - x), v.y - xy.y});
+  };
+  constexpr int stride = 16;
   double nearest = 1e30;
   int j_near = 0;
-  for (std::size_t j = 0; j < outline->size(); ++j) {
-    const glm::dvec2 d{wrapped((*outline)[j].x - x), (*outline)[j].y - xy.y};
-    const double distance = glm::length(d);
-    if (distance < nearest) nearest = distance, j_near = static_cast<int>(j);
-  }
+  for (int j = 0; j < n; j += stride)
+    if (const double d = distance_to(j); d < nearest) nearest = d, j_near = j;
+  const int coarse = j_near;
+  for (int j = coarse - stride; j <= coarse + stride; ++j)
+    if (const double d = distance_to(j); d < nearest) nearest = d, j_near = ((j % n) + n) % n;
   return seed_bark_lift(mean_radius[j_near], callus_radius, nearest) * (1.0 - s) * (1.0 - s);
 }
 
