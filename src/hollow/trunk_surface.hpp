@@ -23,7 +23,8 @@ class TrunkSurface {
   TrunkSurface(std::function<double(double)> radius_m, double tree_height_m, Buttress buttress = {});
 
   // Seed 001 eq. 2: diameter (cm) = a2 · (H − h)^b2, a2 = 2.245, b2 = 0.951 inside the crown and
-  // a2 = 3.336, b2 = 0.771 below the crown base (Hakodate co-dominant Todomatsu).
+  // a2 = 3.336, b2 = 0.771 below the crown base (Hakodate co-dominant Todomatsu). The two fits differ by ~2 %
+  // at the crown base; the below-crown one is scaled to meet the crown one there (no step in the surface).
   static TrunkSurface seed001_taper(double tree_height_m, double crown_base_m, Buttress buttress = {});
 
   double tree_height() const { return tree_height_; }

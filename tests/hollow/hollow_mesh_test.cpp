@@ -3,6 +3,7 @@
 // wider than half the stem, bark following the stem's convexity, hollows at the root collar.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -15,7 +16,8 @@
 namespace heliostand::hollow {
 namespace {
 
-// A 30 m habitat tree (Todomatsu taper, seed 001 eq. 2, crown base at 15 m): radius ≈ 0.23 m at 1.5 m.
+// A 30 m habitat tree (Todomatsu taper, seed 001 eq. 2, crown base at 15 m): radius 0.242 m at 1.5 m
+// (circumference 1.52 m).
 TrunkSurface test_trunk(double flare = 0.0) { return TrunkSurface::seed001_taper(30.0, 15.0, {flare, 0.3}); }
 
 struct Case {
@@ -72,6 +74,17 @@ void expect_only_intended_borders(const HollowModel& model, const std::string& w
 
 class HollowSweep : public ::testing::TestWithParam<Case> {};
 
+// Test names like W120_H200_r015_I010_cylindrical_h150 (sizes in mm, height in cm).
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  const Case& c = info.param;
+  auto mm = [](double m) { return static_cast<int>(std::lround(m * 1000)); };
+  return fmt::format("W{}_H{}_r{}_I{}_{}_h{}_flare{}", mm(c.w), mm(c.h), mm(c.r), mm(c.i),
+                     c.placement == Placement::cylindrical ? "cylindrical" : "tangent", mm(c.height) / 10,
+                     static_cast<int>(std::lround(c.flare * 10)));
+}
+
+void PrintTo(const Case& c, std::ostream* os) { *os << describe(c); }
+
 TEST_P(HollowSweep, MeshIsManifoldConsistentAndFreeOfSelfIntersections) {
   const Case c = GetParam();
   const TrunkSurface trunk = test_trunk(c.flare);
@@ -92,8 +105,10 @@ std::vector<Case> sweep() {
         for (bool bulge : {false, true}) {
           const double r = thick ? w / 4.0 : 0.01;
           const double i = bulge ? w / 4.0 - r : 0.0;
-          if (thick && bulge) continue;  // r = W/4 leaves I = 0: the same case as without bulge
-          cases.push_back({w, h, r, i});
+          const bool seen = std::any_of(cases.begin(), cases.end(), [&](const Case& c) {
+            return c.w == w && c.h == h && c.r == r && c.i == i;  // e.g. W = 0.04: r = W/4 = 1 cm, I = 0
+          });
+          if (!seen) cases.push_back({w, h, r, i});
         }
   // The seed's own placement, within its limit (narrower than the stem).
   cases.push_back({0.12, 0.20, 0.015, 0.01, Placement::tangent_plane});
@@ -102,13 +117,15 @@ std::vector<Case> sweep() {
   return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(SeedRanges, HollowSweep, ::testing::ValuesIn(sweep()));
+INSTANTIATE_TEST_SUITE_P(SeedRanges, HollowSweep, ::testing::ValuesIn(sweep()), case_name);
 
-// Beyond the seed: wider than half the circumference (up to ~90 % of it), and at the root collar.
+// Beyond the seed: wider than half the circumference (0.6 m = 39 %, 0.9 m = 59 %, 1.4 m = 92 % of the
+// 1.52 m circumference, measured along the rim's widest chord W), and at the root collar.
 INSTANTIATE_TEST_SUITE_P(BeyondTheSeed, HollowSweep,
                          ::testing::Values(Case{0.60, 0.30, 0.02, 0.05}, Case{0.90, 0.30, 0.02, 0.05},
-                                           Case{0.90, 0.08, 0.015, 0.0}, Case{0.20, 0.25, 0.02, 0.02, Placement::cylindrical, 0.35, 0.5},
-                                           Case{0.30, 0.30, 0.03, 0.03, Placement::cylindrical, 0.42, 0.8}));
+                                           Case{1.40, 0.20, 0.015, 0.0}, Case{0.20, 0.25, 0.02, 0.02, Placement::cylindrical, 0.35, 0.5},
+                                           Case{0.30, 0.30, 0.03, 0.03, Placement::cylindrical, 0.42, 0.8}),
+                         case_name);
 
 TEST(HollowMesh, WiderThanHalfTheStemOnlyWithCylindricalPlacement) {
   const TrunkSurface trunk = test_trunk();
@@ -141,8 +158,8 @@ double deepest_cut(const HollowMesh& mesh, const TrunkSurface& trunk) {
 }
 
 TEST(HollowMesh, BarkFacesFollowTheStemsConvexityWithinTheTolerance) {
-  // Widely spaced bark lines (l = 8 cm on a 0.23 m radius stem) are the seed's worst case: flat faces between
-  // lines cut into the stem by up to ρ(1 − cos(l/2ρ)) = 0.23 · (1 − cos 0.174) ≈ 3.5 mm.
+  // Widely spaced bark lines (l = 8 cm on a 0.242 m radius stem) are the seed's worst case: flat faces between
+  // lines cut into the stem by up to ρ(1 − cos(l/2ρ)) = 0.242 · (1 − cos 0.165) ≈ 3.3 mm.
   const TrunkSurface trunk = test_trunk();
   HollowSpec spec = spec_for({0.3, 0.3, 0.03, 0.04});
   spec.bark_line_spacing_m = 0.08;
