@@ -163,40 +163,14 @@ HollowModel build_broken_stem(const BrokenStemSpec& spec, const TrunkSurface& tr
       grid[c][k] = b.add(chart.point(xy, lift), bark ? MeshPart::bark : MeshPart::trunk, true, xy, 0.0, lift, c);
     }
   }
-  for (int c = 0; c < n_cols; ++c) {
-    const int c2 = (c + 1) % n_cols;
-    for (int k = 0; k + 1 < n_rows; ++k) {
-      b.triangle(grid[c][k], grid[c2][k], grid[c2][k + 1], true);
-      b.triangle(grid[c][k], grid[c2][k + 1], grid[c][k + 1], true);
-    }
-  }
-
-  std::vector<std::vector<int>> corner(n);
-  for (int j = 0; j < n; ++j) {
-    const CallusRing& ring = callus.rings[j];
-    for (int m = 0; m <= callus.lip_corner; ++m) {
-      if (m == 0) {
-        const double lift = around.lift(ring.foot_xy);
-        const glm::dvec3 p = chart.point(ring.foot_xy, lift);
-        corner[j].push_back(b.add(p, MeshPart::callus, true, ring.foot_xy, 0.0, lift, -1, glm::length(p - ring.centre)));
-        b.frozen.back() = true;
-      } else {
-        corner[j].push_back(b.add(ring.corners[m], MeshPart::callus, false, {}, 0.0, 0.0, -1, ring.radius[m]));
-      }
-    }
-  }
+  add_grid_quads(b, grid);
+  const auto corner = add_callus_corners(b, callus, chart, around);
   std::vector<int> top_row, foot_chain;
   for (int c = 0; c < n_cols; ++c) top_row.push_back(grid[c][n_rows - 1]);
   for (int j = 0; j < n; ++j) foot_chain.push_back(corner[j][0]);
   zip_around(b, top_row, foot_chain, period);
 
-  for (int j = 0; j < n; ++j) {
-    const int j2 = (j + 1) % n;
-    for (int m = 0; m < callus.lip_corner; ++m) {
-      b.triangle(corner[j][m], corner[j2][m], corner[j2][m + 1], false);
-      b.triangle(corner[j][m], corner[j2][m + 1], corner[j][m + 1], false);
-    }
-  }
+  add_roll(b, callus, corner);
   if (options.follow_convexity) model.refinement_passes = follow_convexity(b, around, spec.surface_tolerance_m);
 
   // Bark lines run straight: original and drawn positions coincide.

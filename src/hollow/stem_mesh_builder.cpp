@@ -153,4 +153,53 @@ double Surroundings::lift(glm::dvec2 xy) const {
   return seed_bark_lift(mean_radius[j_near], callus_radius, nearest) * (1.0 - s) * (1.0 - s);
 }
 
+void add_grid_quads(Builder& b, const std::vector<std::vector<int>>& grid) {
+  const int n_cols = static_cast<int>(grid.size());
+  for (int c = 0; c < n_cols; ++c) {
+    const int c2 = (c + 1) % n_cols;
+    for (std::size_t k = 0; k + 1 < grid[c].size(); ++k) {
+      const int v00 = grid[c][k], v10 = grid[c2][k], v11 = grid[c2][k + 1], v01 = grid[c][k + 1];
+      if (v00 < 0 || v10 < 0 || v11 < 0 || v01 < 0) continue;
+      b.triangle(v00, v10, v11, true);
+      b.triangle(v00, v11, v01, true);
+    }
+  }
+}
+
+void close_tip(Builder& b, const std::vector<std::vector<int>>& grid, double tree_height) {
+  const int apex = b.add({0.0, 0.0, tree_height}, MeshPart::trunk, false);
+  const int n_cols = static_cast<int>(grid.size());
+  for (int c = 0; c < n_cols; ++c) {
+    const int top = grid[c].back(), next = grid[(c + 1) % n_cols].back();
+    b.frozen[top] = true;  // shared with the unrefined fan
+    b.triangle(top, next, apex, false);
+  }
+}
+
+std::vector<std::vector<int>> add_callus_corners(Builder& b, const Callus& callus, const StemChart& chart,
+                                                 const Surroundings& around) {
+  std::vector<std::vector<int>> corner(callus.rings.size());
+  for (std::size_t j = 0; j < callus.rings.size(); ++j) {
+    const CallusRing& ring = callus.rings[j];
+    const double lift = around.lift(ring.foot_xy);
+    const glm::dvec3 foot = chart.point(ring.foot_xy, lift);
+    corner[j].push_back(b.add(foot, MeshPart::callus, true, ring.foot_xy, 0.0, lift, -1, glm::length(foot - ring.centre)));
+    b.frozen.back() = true;  // foot edges are shared with the unrefined roll
+    for (int m = 1; m <= callus.lip_corner; ++m)
+      corner[j].push_back(b.add(ring.corners[m], MeshPart::callus, false, {}, 0.0, 0.0, -1, ring.radius[m]));
+  }
+  return corner;
+}
+
+void add_roll(Builder& b, const Callus& callus, const std::vector<std::vector<int>>& corner) {
+  const int rings = static_cast<int>(corner.size());
+  for (int j = 0; j < rings; ++j) {
+    const int j2 = (j + 1) % rings;
+    for (int m = 0; m < callus.lip_corner; ++m) {
+      b.triangle(corner[j][m], corner[j2][m], corner[j2][m + 1], false);
+      b.triangle(corner[j][m], corner[j2][m + 1], corner[j][m + 1], false);
+    }
+  }
+}
+
 }  // namespace heliostand::hollow::detail

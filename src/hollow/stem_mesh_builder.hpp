@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "hollow/callus.hpp"
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/stem_chart.hpp"
 #include "hollow/trunk_surface.hpp"
@@ -51,6 +52,16 @@ struct Builder {
   }
 };
 
+// Quads between neighbouring grid vertices (grid[column][row], columns periodic around the stem), two
+// triangles each, counter-clockwise seen from outside; quads touching a missing vertex (−1) are left out.
+void add_grid_quads(Builder& b, const std::vector<std::vector<int>>& grid);
+// Closes the stem at its tip: a fan from the top row to an apex vertex (the top row is frozen).
+void close_tip(Builder& b, const std::vector<std::vector<int>>& grid, double tree_height);
+
+// The roll: two triangles per corner step between consecutive polygons, from the foot over the top into the
+// wound.
+void add_roll(Builder& b, const Callus& callus, const std::vector<std::vector<int>>& corner);
+
 // Joins two chains that both run upwards (left chain on the left) with triangles, merging by height.
 void zip(Builder& b, const std::vector<int>& left, const std::vector<int>& right);
 
@@ -71,6 +82,11 @@ struct Surroundings {
   // Eq. 3.18 with a window that brings the rise to zero at the patch border, where the bark meets the stem.
   double lift(glm::dvec2 xy) const;
 };
+
+// The callus corners as mesh vertices (corner[j][m]); corner 0, the foot, is placed in the chart and lifted
+// with the bark it joins.
+std::vector<std::vector<int>> add_callus_corners(Builder& b, const Callus& callus, const StemChart& chart,
+                                                 const Surroundings& around);
 
 // Splits stem/bark edges whose midpoint is further than `tolerance` from the (lifted) surface, so that faces
 // follow the stem's convexity; the split decision is per edge, so neighbouring faces stay conforming.
