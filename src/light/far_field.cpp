@@ -12,9 +12,9 @@
 namespace heliostand {
 namespace {
 
-// Along a ray the attenuation exp(-(1-t) tau) is below 1e-9 long before this many expected hits; stopping
-// there keeps horizontal rays through a periodic stand from marching forever.
-constexpr double saturated_hits = 40.0;
+// Once exp(-(1-t) tau) < exp(-14) ~ 1e-6 the patch is dark for any purpose; stopping there keeps
+// near-horizontal rays in a dense (or periodic) stand from marching on for nothing.
+constexpr double saturated_attenuation = 14.0;
 
 int wrap_index(int i, int n) {
   i %= n;
@@ -58,7 +58,11 @@ bool VoxelGrid::outside(const glm::dvec3& point) const {
   return point.x < origin.x || point.x > far_corner.x || point.y < origin.y || point.y > far_corner.y;
 }
 
-double VoxelGrid::sample(std::span<const double> values, const glm::dvec3& point) const {
+double VoxelGrid::sample_layer(std::span<const double> values, const glm::dvec3& point, int layer) const {
+  return sample(values, point, layer);
+}
+
+double VoxelGrid::sample(std::span<const double> values, const glm::dvec3& point, int fixed_layer) const {
   if (outside(point)) return 0.0;
   int lo[3], hi[3];
   double f[3];
@@ -76,6 +80,7 @@ double VoxelGrid::sample(std::span<const double> values, const glm::dvec3& point
     }
   }
   const auto v = [&](int x, int y, int z) { return values[index(x, y, z)]; };
+  if (fixed_layer >= 0) lo[2] = hi[2] = fixed_layer;
   const double c00 = v(lo[0], lo[1], lo[2]) * (1 - f[0]) + v(hi[0], lo[1], lo[2]) * f[0];
   const double c10 = v(lo[0], hi[1], lo[2]) * (1 - f[0]) + v(hi[0], hi[1], lo[2]) * f[0];
   const double c01 = v(lo[0], lo[1], hi[2]) * (1 - f[0]) + v(hi[0], lo[1], hi[2]) * f[0];
@@ -86,7 +91,7 @@ double VoxelGrid::sample(std::span<const double> values, const glm::dvec3& point
 }
 
 FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const CelestialSphere& sky)
-    : grid_(grid_around(occluders, p)) {
+    : grid_(grid_around(occluders, p)), transmittance_(p.transmittance) {
   // Longest useful path: horizontal rays in a periodic stand would circle the torus forever.
   max_path_m_ = 4.0 * glm::length(glm::dvec3(grid_.dims) * grid_.cell) + 1.0;
   density_.assign(grid_.cell_count(), 0.0);
@@ -122,19 +127,45 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
   for (unsigned w = 0; w < workers; ++w)
     pool.emplace_back([&, w] {
       for (std::size_t q = w; q < patches.size(); q += workers)
-        for (int z = 0; z < grid_.dims.z; ++z)
-          for (int y = 0; y < grid_.dims.y; ++y)
-            for (int x = 0; x < grid_.dims.x; ++x)
-              depth_[q * grid_.cell_count() + grid_.index(x, y, z)] =
-                  march(grid_.centre(x, y, z), patches[q].direction);
+        sweep(patches[q].direction, std::span<double>(depth_.data() + q * grid_.cell_count(), grid_.cell_count()));
     });
 }
 
-double FarField::march(const glm::dvec3& point, const glm::dvec3& direction) const {
-  const double step = 0.5 * std::min({grid_.cell.x, grid_.cell.y, grid_.cell.z});
+// Layer by layer against the light: tau at a cell centre = the integral of sigma up to the next layer's
+// mid-plane plus tau already known there (bilinear in that layer). Each cell costs ~1/|N.z| samples
+// instead of a march to the edge of the canopy. z never wraps, so this holds for periodic plots too.
+// (Band centres never lie on the horizon for even V, so N.z != 0.)
+void FarField::sweep(const glm::dvec3& direction, std::span<double> depth) const {
+  const int step_z = direction.z > 0 ? 1 : -1;
+  const int first = direction.z > 0 ? grid_.dims.z - 1 : 0;
+  const double reach = grid_.cell.z / std::abs(direction.z);  // path to the next layer's mid-plane
+  for (int z = first; z >= 0 && z < grid_.dims.z; z -= step_z)
+    for (int y = 0; y < grid_.dims.y; ++y)
+      for (int x = 0; x < grid_.dims.x; ++x) {
+        const glm::dvec3 start = grid_.centre(x, y, z);
+        const int next = z + step_z;
+        double tau;
+        if (next < 0 || next >= grid_.dims.z) {
+          tau = march(start, direction);  // last layer: at most half a layer to the grid face
+        } else {
+          tau = march(start, direction, reach);
+          const glm::dvec3 landing = start + reach * direction;
+          tau += grid_.outside(landing) ? 0.0 : grid_.sample_layer(depth, landing, next);
+        }
+        depth[grid_.index(x, y, z)] = tau;
+      }
+}
+
+double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, double length) const {
+  // midpoint rule, at least one sample per cell length: sigma is itself trilinear between cell centres
+  const double cell = std::min({grid_.cell.x, grid_.cell.y, grid_.cell.z});
+  const double saturated_hits = saturated_attenuation / std::max(1e-6, 1.0 - transmittance_);
+  length = std::min(length, max_path_m_);
+  const int samples = static_cast<int>(std::ceil(length / cell - 1e-9));
+  const double step = length / samples;
   double tau = 0;
-  for (double s = 0.5 * step; s < max_path_m_ && tau < saturated_hits; s += step) {
-    const glm::dvec3 at = point + s * direction;
+  for (int k = 0; k < samples && tau < saturated_hits; ++k) {
+    const glm::dvec3 at = point + (k + 0.5) * step * direction;
     if (grid_.outside(at)) break;
     tau += grid_.sample(density_, at) * step;
   }

@@ -26,7 +26,9 @@ struct VoxelGrid {
   bool outside(const glm::dvec3& point) const;  // beyond the grid: no more leaf balls along a ray
   // Trilinear interpolation between cell-centre values (clamped at the faces, wrapped in x/y when periodic);
   // 0 outside the grid.
-  double sample(std::span<const double> values, const glm::dvec3& point) const;
+  // fixed_layer >= 0: bilinear in x/y within that z layer (the point's z is ignored).
+  double sample(std::span<const double> values, const glm::dvec3& point, int fixed_layer = -1) const;
+  double sample_layer(std::span<const double> values, const glm::dvec3& point, int layer) const;
 };
 
 class FarField {
@@ -39,10 +41,14 @@ class FarField {
   // Expected number of ball hits along patch `patch`'s direction from `point` outward.
   double optical_depth(const glm::dvec3& point, int patch) const;
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
-  double march(const glm::dvec3& point, const glm::dvec3& direction) const;
+  // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
+  double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
 
  private:
+  void sweep(const glm::dvec3& direction, std::span<double> depth) const;
+
   VoxelGrid grid_;
+  double transmittance_;
   double max_path_m_;
   std::vector<double> density_;
   std::vector<double> depth_;

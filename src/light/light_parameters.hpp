@@ -18,7 +18,7 @@ struct LightParameters {
   // exact = true disables both (every ball vs every ball).
   bool exact = false;
   double cutoff_m = 4.0;
-  double far_field_cell_m = 2.0;
+  double far_field_cell_m = 1.0;  // 2 m cells smear crowns and gaps: light 0.02 too low on average (docs/light.md)
 
   // Periodic stand edges: treat the plot as a torus for light (edge trees not unnaturally sunlit).
   bool periodic = false;
