@@ -18,7 +18,7 @@ struct LightBenchmarkOptions {
   // extrapolated (each ball's answer is independent of the others, so the subsample answers are exact).
   std::size_t reference_exact_max = 4000;
   std::size_t reference_culled_max = 30000;
-  std::size_t opencl_exact_max = 120000;
+  std::size_t opencl_exact_max = 20000;
   std::size_t subsample = 400;            // balls in the subsample (also where errors are measured)
 };
 

@@ -28,9 +28,12 @@ constexpr std::size_t culled_chunk = 16384;
 template <typename T>
 cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
   // a zero-sized buffer is invalid in OpenCL; one element of padding keeps empty inputs legal
-  std::vector<T> padded = data;
-  if (padded.empty()) padded.resize(1);
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, padded.size() * sizeof(T), padded.data());
+  if (data.empty()) {
+    T padding{};
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T), &padding);
+  }
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
+                    const_cast<T*>(data.data()));
 }
 
 }  // namespace
@@ -140,8 +143,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
 
   const NearFieldSearch search(set, parameters_.cutoff_m);
   const FarField far(set, parameters_, sky);
-  std::vector<float> depth(far.optical_depth().begin(), far.optical_depth().end());
-  const cl::Buffer depth_buffer = read_only(context, depth);
+  const cl::Buffer depth_buffer = read_only(context, far.optical_depth());
   const glm::dvec3 grid_origin = far.grid().origin - origin;
   const cl_float4 grid_origin_arg = {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}};
   const cl_float4 grid_cell_arg = {{float(far.grid().cell.x), float(far.grid().cell.y), float(far.grid().cell.z), 0.0f}};
