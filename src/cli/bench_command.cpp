@@ -5,6 +5,9 @@
 #include <memory>
 #include <stdexcept>
 
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
 #include "light/light_benchmark.hpp"
 
 namespace heliostand::cli {
@@ -42,6 +45,8 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
   light->callback([options, output] {
+    // stdout carries the JSON: progress lines go to stderr (DESIGN.md: logs on stderr)
+    if (!spdlog::get("heliostand-bench")) spdlog::set_default_logger(spdlog::stderr_color_mt("heliostand-bench"));
     const std::string json = run_light_benchmark(*options);
     std::cout << json;
     if (!output->empty()) {

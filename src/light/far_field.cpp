@@ -34,9 +34,10 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, st
       high = glm::max(high, occluders.centres[k]);
     }
   }
-  // one empty cell of margin, so that density deposited near the hull is not clamped away
-  low -= occluders.max_radius + p.far_field_cell_m;
-  high += occluders.max_radius + p.far_field_cell_m;
+  // two cells of margin: the cloud-in-cell deposit reaches one cell beyond a ball's own, and the outermost
+  // cells must stay empty because interpolation holds their value out to the grid's faces
+  low -= occluders.max_radius + 2 * p.far_field_cell_m;
+  high += occluders.max_radius + 2 * p.far_field_cell_m;
   if (p.periodic) {
     low.x = p.plot_x_min, high.x = p.plot_x_max;
     low.y = p.plot_y_min, high.y = p.plot_y_max;
