@@ -4,6 +4,8 @@
 #include <cmath>
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -12,16 +14,16 @@
 namespace heliostand {
 namespace {
 
-// Along a ray the attenuation exp(-(1-t) tau) is below 1e-9 long before this many expected hits; stopping
-// there keeps horizontal rays through a periodic stand from marching forever.
-constexpr double saturated_hits = 40.0;
+// Once exp(-(1-t) tau) < exp(-14) ~ 1e-6 the patch is dark for any purpose; stopping there keeps
+// near-horizontal rays in a dense (or periodic) stand from marching on for nothing.
+constexpr double saturated_attenuation = 14.0;
 
 int wrap_index(int i, int n) {
   i %= n;
   return i < 0 ? i + n : i;
 }
 
-VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p) {
+VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, std::size_t patch_count) {
   VoxelGrid grid;
   grid.periodic = p.periodic;
   glm::dvec3 low(0.0), high(0.0);
@@ -32,18 +34,28 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p) {
       high = glm::max(high, occluders.centres[k]);
     }
   }
-  // one empty cell of margin, so that density deposited near the hull is not clamped away
-  low -= occluders.max_radius + p.far_field_cell_m;
-  high += occluders.max_radius + p.far_field_cell_m;
+  // two cells of margin: the cloud-in-cell deposit reaches one cell beyond a ball's own, and the outermost
+  // cells must stay empty because interpolation holds their value out to the grid's faces
+  low -= occluders.max_radius + 2 * p.far_field_cell_m;
+  high += occluders.max_radius + 2 * p.far_field_cell_m;
   if (p.periodic) {
     low.x = p.plot_x_min, high.x = p.plot_x_max;
     low.y = p.plot_y_min, high.y = p.plot_y_max;
   }
   const glm::dvec3 extent = high - low;
+  // The table holds 4 bytes per cell and patch; a stand too big for the budget gets coarser cells.
+  const double budget_cells = p.far_field_table_mb * 1e6 / (4.0 * patch_count);
+  double cell_m = p.far_field_cell_m;
+  const double volume = (extent.x + cell_m) * (extent.y + cell_m) * (extent.z + cell_m);
+  if (volume / (cell_m * cell_m * cell_m) > budget_cells) {
+    cell_m = std::cbrt(volume / budget_cells) * 1.05;
+    spdlog::warn("light far field: {:.3g} m cells would exceed {} MB; using {:.3g} m cells", p.far_field_cell_m,
+                 p.far_field_table_mb, cell_m);
+  }
   for (int axis = 0; axis < 3; ++axis) {
-    grid.dims[axis] = std::max(1, static_cast<int>(std::ceil(extent[axis] / p.far_field_cell_m - 1e-9)));
+    grid.dims[axis] = std::max(1, static_cast<int>(std::ceil(extent[axis] / cell_m - 1e-9)));
     // periodic x/y: whole cells per plot; otherwise cells of the asked size (the box grows to fit)
-    grid.cell[axis] = (p.periodic && axis < 2) ? extent[axis] / grid.dims[axis] : p.far_field_cell_m;
+    grid.cell[axis] = (p.periodic && axis < 2) ? extent[axis] / grid.dims[axis] : cell_m;
   }
   grid.origin = low;
   return grid;
@@ -58,35 +70,8 @@ bool VoxelGrid::outside(const glm::dvec3& point) const {
   return point.x < origin.x || point.x > far_corner.x || point.y < origin.y || point.y > far_corner.y;
 }
 
-double VoxelGrid::sample(std::span<const double> values, const glm::dvec3& point) const {
-  if (outside(point)) return 0.0;
-  int lo[3], hi[3];
-  double f[3];
-  for (int axis = 0; axis < 3; ++axis) {
-    const double u = (point[axis] - origin[axis]) / cell[axis] - 0.5;
-    const double base = std::floor(u);
-    f[axis] = u - base;
-    const int i = static_cast<int>(base);
-    if (periodic && axis < 2) {
-      lo[axis] = wrap_index(i, dims[axis]);
-      hi[axis] = wrap_index(i + 1, dims[axis]);
-    } else {
-      lo[axis] = std::clamp(i, 0, dims[axis] - 1);
-      hi[axis] = std::clamp(i + 1, 0, dims[axis] - 1);
-    }
-  }
-  const auto v = [&](int x, int y, int z) { return values[index(x, y, z)]; };
-  const double c00 = v(lo[0], lo[1], lo[2]) * (1 - f[0]) + v(hi[0], lo[1], lo[2]) * f[0];
-  const double c10 = v(lo[0], hi[1], lo[2]) * (1 - f[0]) + v(hi[0], hi[1], lo[2]) * f[0];
-  const double c01 = v(lo[0], lo[1], hi[2]) * (1 - f[0]) + v(hi[0], lo[1], hi[2]) * f[0];
-  const double c11 = v(lo[0], hi[1], hi[2]) * (1 - f[0]) + v(hi[0], hi[1], hi[2]) * f[0];
-  const double c0 = c00 * (1 - f[1]) + c10 * f[1];
-  const double c1 = c01 * (1 - f[1]) + c11 * f[1];
-  return c0 * (1 - f[2]) + c1 * f[2];
-}
-
 FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const CelestialSphere& sky)
-    : grid_(grid_around(occluders, p)) {
+    : grid_(grid_around(occluders, p, sky.patches().size())), transmittance_(p.transmittance) {
   // Longest useful path: horizontal rays in a periodic stand would circle the torus forever.
   max_path_m_ = 4.0 * glm::length(glm::dvec3(grid_.dims) * grid_.cell) + 1.0;
   density_.assign(grid_.cell_count(), 0.0);
@@ -116,33 +101,62 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
   }
   // The optical-depth table: patches are independent, so split them over the cores.
   const auto& patches = sky.patches();
-  depth_.assign(patches.size() * grid_.cell_count(), 0.0);
+  depth_.assign(patches.size() * grid_.cell_count(), 0.0f);
   const unsigned workers = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
   std::vector<std::jthread> pool;
   for (unsigned w = 0; w < workers; ++w)
     pool.emplace_back([&, w] {
-      for (std::size_t q = w; q < patches.size(); q += workers)
-        for (int z = 0; z < grid_.dims.z; ++z)
-          for (int y = 0; y < grid_.dims.y; ++y)
-            for (int x = 0; x < grid_.dims.x; ++x)
-              depth_[q * grid_.cell_count() + grid_.index(x, y, z)] =
-                  march(grid_.centre(x, y, z), patches[q].direction);
+      std::vector<double> depth(grid_.cell_count());  // swept in double, stored in float (read by both solvers)
+      for (std::size_t q = w; q < patches.size(); q += workers) {
+        sweep(patches[q].direction, depth);
+        std::copy(depth.begin(), depth.end(), depth_.begin() + q * grid_.cell_count());
+      }
     });
 }
 
-double FarField::march(const glm::dvec3& point, const glm::dvec3& direction) const {
-  const double step = 0.5 * std::min({grid_.cell.x, grid_.cell.y, grid_.cell.z});
+// Layer by layer against the light: tau at a cell centre = the integral of sigma up to the next layer's
+// mid-plane plus tau already known there (bilinear in that layer). Each cell costs ~1/|N.z| samples
+// instead of a march to the edge of the canopy. z never wraps, so this holds for periodic plots too.
+// (Band centres never lie on the horizon for even V, so N.z != 0.)
+void FarField::sweep(const glm::dvec3& direction, std::span<double> depth) const {
+  const int step_z = direction.z > 0 ? 1 : -1;
+  const int first = direction.z > 0 ? grid_.dims.z - 1 : 0;
+  const double reach = grid_.cell.z / std::abs(direction.z);  // path to the next layer's mid-plane
+  for (int z = first; z >= 0 && z < grid_.dims.z; z -= step_z)
+    for (int y = 0; y < grid_.dims.y; ++y)
+      for (int x = 0; x < grid_.dims.x; ++x) {
+        const glm::dvec3 start = grid_.centre(x, y, z);
+        const int next = z + step_z;
+        double tau;
+        if (next < 0 || next >= grid_.dims.z) {
+          tau = march(start, direction);  // last layer: at most half a layer to the grid face
+        } else {
+          tau = march(start, direction, reach);
+          const glm::dvec3 landing = start + reach * direction;
+          tau += grid_.outside(landing) ? 0.0 : grid_.sample_layer(std::span<const double>(depth), landing, next);
+        }
+        depth[grid_.index(x, y, z)] = tau;
+      }
+}
+
+double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, double length) const {
+  // midpoint rule, at least one sample per cell length: sigma is itself trilinear between cell centres
+  const double cell = std::min({grid_.cell.x, grid_.cell.y, grid_.cell.z});
+  const double saturated_hits = saturated_attenuation / std::max(1e-6, 1.0 - transmittance_);
+  length = std::min(length, max_path_m_);
+  const int samples = static_cast<int>(std::ceil(length / cell - 1e-9));
+  const double step = length / samples;
   double tau = 0;
-  for (double s = 0.5 * step; s < max_path_m_ && tau < saturated_hits; s += step) {
-    const glm::dvec3 at = point + s * direction;
+  for (int k = 0; k < samples && tau < saturated_hits; ++k) {
+    const glm::dvec3 at = point + (k + 0.5) * step * direction;
     if (grid_.outside(at)) break;
-    tau += grid_.sample(density_, at) * step;
+    tau += grid_.sample(std::span<const double>(density_), at) * step;
   }
   return tau;
 }
 
 double FarField::optical_depth(const glm::dvec3& point, int patch) const {
-  const std::span<const double> table(depth_.data() + std::size_t(patch) * grid_.cell_count(), grid_.cell_count());
+  const std::span<const float> table(depth_.data() + std::size_t(patch) * grid_.cell_count(), grid_.cell_count());
   return grid_.sample(table, point);
 }
 

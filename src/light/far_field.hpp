@@ -5,6 +5,8 @@
 // depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
 // ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
 // balls with mean K = tau. Both solvers read the same table (double on the host, float on the device).
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -26,7 +28,11 @@ struct VoxelGrid {
   bool outside(const glm::dvec3& point) const;  // beyond the grid: no more leaf balls along a ray
   // Trilinear interpolation between cell-centre values (clamped at the faces, wrapped in x/y when periodic);
   // 0 outside the grid.
-  double sample(std::span<const double> values, const glm::dvec3& point) const;
+  // fixed_layer >= 0: bilinear in x/y within that z layer (the point's z is ignored).
+  template <typename T>
+  double sample(std::span<const T> values, const glm::dvec3& point, int fixed_layer = -1) const;
+  template <typename T>
+  double sample_layer(std::span<const T> values, const glm::dvec3& point, int layer) const;
 };
 
 class FarField {
@@ -35,17 +41,60 @@ class FarField {
 
   const VoxelGrid& grid() const { return grid_; }
   const std::vector<double>& density() const { return density_; }         // sigma per cell, 1/m
-  const std::vector<double>& optical_depth() const { return depth_; }     // [patch][cell]
+  const std::vector<float>& optical_depth() const { return depth_; }      // [patch][cell]
   // Expected number of ball hits along patch `patch`'s direction from `point` outward.
   double optical_depth(const glm::dvec3& point, int patch) const;
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
-  double march(const glm::dvec3& point, const glm::dvec3& direction) const;
+  // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
+  double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
 
  private:
+  void sweep(const glm::dvec3& direction, std::span<double> depth) const;
+
   VoxelGrid grid_;
+  double transmittance_;
   double max_path_m_;
   std::vector<double> density_;
-  std::vector<double> depth_;
+  std::vector<float> depth_;
 };
+
+inline int wrap_cell(int i, int n) {
+  i %= n;
+  return i < 0 ? i + n : i;
+}
+
+template <typename T>
+inline double VoxelGrid::sample_layer(std::span<const T> values, const glm::dvec3& point, int layer) const {
+  return sample(values, point, layer);
+}
+
+template <typename T>
+inline double VoxelGrid::sample(std::span<const T> values, const glm::dvec3& point, int fixed_layer) const {
+  if (outside(point)) return 0.0;
+  int lo[3], hi[3];
+  double f[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    const double u = (point[axis] - origin[axis]) / cell[axis] - 0.5;
+    const double base = std::floor(u);
+    f[axis] = u - base;
+    const int i = static_cast<int>(base);
+    if (periodic && axis < 2) {
+      lo[axis] = wrap_cell(i, dims[axis]);
+      hi[axis] = wrap_cell(i + 1, dims[axis]);
+    } else {
+      lo[axis] = std::clamp(i, 0, dims[axis] - 1);
+      hi[axis] = std::clamp(i + 1, 0, dims[axis] - 1);
+    }
+  }
+  const auto v = [&](int x, int y, int z) { return values[index(x, y, z)]; };
+  if (fixed_layer >= 0) lo[2] = hi[2] = fixed_layer;
+  const double c00 = v(lo[0], lo[1], lo[2]) * (1 - f[0]) + v(hi[0], lo[1], lo[2]) * f[0];
+  const double c10 = v(lo[0], hi[1], lo[2]) * (1 - f[0]) + v(hi[0], hi[1], lo[2]) * f[0];
+  const double c01 = v(lo[0], lo[1], hi[2]) * (1 - f[0]) + v(hi[0], lo[1], hi[2]) * f[0];
+  const double c11 = v(lo[0], hi[1], hi[2]) * (1 - f[0]) + v(hi[0], hi[1], hi[2]) * f[0];
+  const double c0 = c00 * (1 - f[1]) + c10 * f[1];
+  const double c1 = c01 * (1 - f[1]) + c11 * f[1];
+  return c0 * (1 - f[2]) + c1 * f[2];
+}
 
 }  // namespace heliostand

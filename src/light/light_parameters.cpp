@@ -22,6 +22,7 @@ void validate(const LightParameters& p) {
   require(p.transmittance > 0 && p.transmittance <= 1, "transmittance", "expected a number in (0, 1]");
   require(p.cutoff_m > 0, "cutoff_m", "expected a distance > 0 m");
   require(p.far_field_cell_m > 0, "far_field_cell_m", "expected a distance > 0 m");
+  require(p.far_field_table_mb >= 1, "far_field_table_mb", "expected at least 1 MB");
   if (p.periodic) {
     require(p.plot_x_max > p.plot_x_min, "plot_x_max", "periodic edges need plot_x_max > plot_x_min");
     require(p.plot_y_max > p.plot_y_min, "plot_y_max", "periodic edges need plot_y_max > plot_y_min");

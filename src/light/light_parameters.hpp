@@ -18,7 +18,9 @@ struct LightParameters {
   // exact = true disables both (every ball vs every ball).
   bool exact = false;
   double cutoff_m = 4.0;
-  double far_field_cell_m = 2.0;
+  bool far_field = true;           // false: nothing beyond the cut-off shades (to study the approximation)
+  double far_field_table_mb = 512;  // memory cap of the far-field table; bigger stands get coarser cells
+  double far_field_cell_m = 1.0;  // 2 m cells smear crowns and gaps: light 0.02 too low on average (docs/light.md)
 
   // Periodic stand edges: treat the plot as a torus for light (edge trees not unnaturally sunlit).
   bool periodic = false;

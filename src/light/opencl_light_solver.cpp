@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <glm/common.hpp>
@@ -22,15 +23,30 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Each work item keeps V x H floats of private state; PoCL places a whole work-group's private arrays on
+// one thread's stack, so a large automatic local size overflows it (seen at 16k receivers). Small explicit
+// groups keep that at 64 x 2 KB.
+constexpr std::size_t group_size = 64;
+
+void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::Device& device, std::size_t items) {
+  const std::size_t local =
+      std::min<std::size_t>(group_size, kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device));
+  const std::size_t global = (items + local - 1) / local * local;  // the kernels ignore the extra items
+  queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
+}
+
 // Receivers per culled kernel launch: bounds the memory of the candidate lists (~ chunk x candidates x 4 B).
 constexpr std::size_t culled_chunk = 16384;
 
 template <typename T>
 cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
   // a zero-sized buffer is invalid in OpenCL; one element of padding keeps empty inputs legal
-  std::vector<T> padded = data;
-  if (padded.empty()) padded.resize(1);
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, padded.size() * sizeof(T), padded.data());
+  if (data.empty()) {
+    T padding{};
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T), &padding);
+  }
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
+                    const_cast<T*>(data.data()));
 }
 
 }  // namespace
@@ -132,20 +148,24 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, float(torus.size.x));
     k.setArg(arg++, float(torus.size.y));
     k.setArg(arg++, out);
-    queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(receivers.size()), cl::NullRange);
+    launch(queue, k, device_->cl.device, receivers.size());
     collect(out, 0, receivers.size());
     statistics_.evaluate_seconds = seconds_since(start);
     return samples;
   }
 
   const NearFieldSearch search(set, parameters_.cutoff_m);
-  const FarField far(set, parameters_, sky);
-  std::vector<float> depth(far.optical_depth().begin(), far.optical_depth().end());
-  const cl::Buffer depth_buffer = read_only(context, depth);
-  const glm::dvec3 grid_origin = far.grid().origin - origin;
+  // Without a far field the kernel gets a one-cell empty table and a zero attenuation factor.
+  const std::optional<FarField> far =
+      parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky) : std::nullopt;
+  const VoxelGrid grid = far ? far->grid() : VoxelGrid{};
+  static const std::vector<float> no_table{0.0f};
+  const cl::Buffer depth_buffer = read_only(context, far ? far->optical_depth() : no_table);
+  const glm::dvec3 grid_origin = grid.origin - origin;
   const cl_float4 grid_origin_arg = {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}};
-  const cl_float4 grid_cell_arg = {{float(far.grid().cell.x), float(far.grid().cell.y), float(far.grid().cell.z), 0.0f}};
-  const cl_int4 grid_dims_arg = {{far.grid().dims.x, far.grid().dims.y, far.grid().dims.z, 0}};
+  const cl_float4 grid_cell_arg = {{float(grid.cell.x), float(grid.cell.y), float(grid.cell.z), 0.0f}};
+  const cl_int4 grid_dims_arg = {{grid.dims.x, grid.dims.y, grid.dims.z, 0}};
+  const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
   statistics_.setup_seconds = seconds_since(setup_start);
 
   // Candidate search (host) of one chunk overlaps nothing yet; its time is counted as setup.
@@ -181,9 +201,9 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, grid_dims_arg);
     k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
     k.setArg(arg++, float(parameters_.cutoff_m));
-    k.setArg(arg++, float(1.0 - parameters_.transmittance));
+    k.setArg(arg++, far_attenuation);
     k.setArg(arg++, out);
-    queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(chunk.size()), cl::NullRange);
+    launch(queue, k, device_->cl.device, chunk.size());
     collect(out, first, chunk.size());
   }
   statistics_.evaluate_seconds = seconds_since(start) - search_seconds;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
@@ -68,7 +69,8 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   const OccluderSet set = make_occluder_set(balls, torus, parameters_.cutoff_m);
   const NearFieldSearch search(set, parameters_.cutoff_m);
   const CandidateLists near = search.candidates(receivers);
-  const FarField far(set, parameters_, sky);
+  const std::optional<FarField> far =
+      parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky) : std::nullopt;
   statistics_.setup_seconds = seconds_since(start);
   statistics_.mean_candidates = receivers.empty() ? 0.0 : double(near.occluders.size()) / receivers.size();
 
@@ -83,8 +85,10 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
         const auto j = near.occluders[k];
         if (ray_hits_ball(centre, patch.direction, set.centres[j], set.radii[j])) b *= t;
       }
-      const glm::dvec3 beyond_cutoff = torus.wrap(centre + parameters_.cutoff_m * patch.direction);
-      b *= std::exp(-(1.0 - t) * far.optical_depth(beyond_cutoff, static_cast<int>(q)));
+      if (far) {
+        const glm::dvec3 beyond_cutoff = torus.wrap(centre + parameters_.cutoff_m * patch.direction);
+        b *= std::exp(-(1.0 - t) * far->optical_depth(beyond_cutoff, static_cast<int>(q)));
+      }
       intensity.push_back(b);
     }
     samples.push_back(light_sample(sky, intensity));

@@ -27,18 +27,24 @@ std::unique_ptr<LightSolver> make_solver(Backend backend, const LightParameters&
   return std::make_unique<OpenCLLightSolver>(p, std::nullopt);
 }
 
-class LightSolverTest : public ::testing::TestWithParam<std::tuple<Backend, Mode>> {
+class LightSolverTest : public ::testing::TestWithParam<std::tuple<Backend, Mode, bool>> {
  protected:
   void SetUp() override {
     if (backend() == Backend::opencl && !opencl_available()) GTEST_SKIP() << "no OpenCL device";
   }
   Backend backend() const { return std::get<0>(GetParam()); }
   // Culled mode with a cut-off beyond the test scenes: every occluder is near field, the far field is empty,
-  // so the hand-computed answers hold for both modes.
+  // so the hand-computed answers hold for both modes. Periodic runs use a plot so large that the images of
+  // the scene (1000 m away, level with it) subtend no patch centre: the answers must not change.
   LightParameters parameters() const {
     LightParameters p;
     p.exact = std::get<1>(GetParam()) == Mode::exact;
     p.cutoff_m = 100.0;
+    p.periodic = std::get<2>(GetParam());
+    p.plot_x_min = p.plot_y_min = -500;
+    p.plot_x_max = p.plot_y_max = 500;
+    // (a far field over a 1 km torus would only add zeros, slowly: leave it out there)
+    p.far_field = !p.periodic;
     return p;
   }
   std::vector<LightSample> solve(const LightParameters& p, const std::vector<LeafBall>& balls) {
@@ -71,14 +77,11 @@ TEST_P(LightSolverTest, LoneBallSeesTheWholeSkyAndLightComesFromTheBrighterHemis
 TEST_P(LightSolverTest, BallInsideOneOccluderGetsTAndInsideTwoGetsTSquared) {
   LightParameters p = parameters();
   p.transmittance = 0.3;
-  // receiver 0 inside ball 1; receiver 2 inside balls 1 and 3
-  const std::vector<LeafBall> balls{{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 1.0}, {{0.5, 0, 0}, 0.1}, {{0.6, 0, 0}, 0.5}};
-  const auto samples = solve(p, balls);
-  // ball 0 is inside ball 1 only (ball 3 reaches 0.1 from it); all other balls are seen only in some patches,
-  // so compare receiver 0 against an all-shaded sky times what balls 2 and 3 add.
-  EXPECT_LE(samples[0].light, 0.3 + 1e-6);
-  // Receiver 2 sits inside balls 1 and 3: every patch carries t^2 at least.
-  EXPECT_LE(samples[2].light, 0.09 + 1e-6);
+  // The receiver sits inside two big balls and is shaded by both in every direction.
+  const std::vector<LeafBall> nested{{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 1.0}, {{-0.5, 0.3, 0.4}, 3.0}};
+  const auto twice = solve(p, nested);
+  EXPECT_NEAR(twice[0].light, 0.09, 1e-6);
+  EXPECT_NEAR(twice[0].vector.z, 1.0, 1e-6);
   // A lone pair: receiver inside its only occluder gets exactly t, and keeps the unshaded direction.
   const std::vector<LeafBall> pair{{{0, 0, 0}, 0.1}, {{0.3, 0.1, -0.2}, 2.0}};
   const auto enclosed = solve(p, pair);
@@ -158,12 +161,38 @@ TEST_P(LightSolverTest, RingOfOccludersLeavesTheLightVectorVertical) {
   EXPECT_NEAR(std::abs(samples[0].vector.z), 1.0, 1e-6);
 }
 
+TEST_P(LightSolverTest, PeriodicPlotShadesAcrossItsEdgesLikeExplicitCopies) {
+  LightParameters p = parameters();
+  if (!p.periodic) GTEST_SKIP() << "periodic plots only";
+  p.plot_x_min = p.plot_y_min = 0;
+  p.plot_x_max = p.plot_y_max = 10;
+  p.cutoff_m = 30;  // beyond the plot: near field holds every copy, the far field is empty
+  p.far_field = true;
+  // a receiver at the west edge and an occluder at the east edge: neighbours across the boundary
+  const std::vector<LeafBall> stand{{{0.5, 5, 1}, 0.2}, {{9.5, 5.3, 1.1}, 0.5}};
+  const auto periodic = solve(p, stand);
+  // the same scene spelled out: the plot and its 8 neighbours, as plain (non-periodic) balls
+  std::vector<LeafBall> copies{stand[0]};
+  for (int sx = -1; sx <= 1; ++sx)
+    for (int sy = -1; sy <= 1; ++sy)
+      for (std::size_t k = 0; k < stand.size(); ++k)
+        if (k != 0 || sx != 0 || sy != 0)
+          copies.push_back({stand[k].centre + glm::dvec3(10.0 * sx, 10.0 * sy, 0), stand[k].radius});
+  p.periodic = false;
+  const auto spelled_out = solve(p, copies);
+  EXPECT_LT(periodic[0].light, 0.97);  // the occluder 1 m west (across the edge) really shades
+  EXPECT_NEAR(periodic[0].light, spelled_out[0].light, 1e-6);
+  EXPECT_NEAR(glm::dot(periodic[0].vector, spelled_out[0].vector), 1.0, 1e-7);
+  EXPECT_GT(periodic[0].vector.x, 0.0);  // light comes from the east, away from the shading neighbour
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, LightSolverTest,
                          ::testing::Combine(::testing::Values(Backend::reference, Backend::opencl),
-                                            ::testing::Values(Mode::exact, Mode::culled)),
+                                            ::testing::Values(Mode::exact, Mode::culled), ::testing::Bool()),
                          [](const auto& info) {
                            return std::string(std::get<0>(info.param) == Backend::reference ? "Reference" : "OpenCL") +
-                                  (std::get<1>(info.param) == Mode::exact ? "Exact" : "Culled");
+                                  (std::get<1>(info.param) == Mode::exact ? "Exact" : "Culled") +
+                                  (std::get<2>(info.param) ? "Periodic" : "Open");
                          });
 
 // ---- OpenCL against the reference on random stands ----------------------------------------------------

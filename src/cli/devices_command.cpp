@@ -1,0 +1,26 @@
+#include "cli/devices_command.hpp"
+
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "compute/device_choice.hpp"
+
+namespace heliostand::cli {
+
+void add_devices_command(CLI::App& app) {
+  auto* devices = app.add_subcommand("devices", "List the compute devices (--device values) and mark the default");
+  devices->callback([] {
+    const auto list = compute::list_opencl_devices();
+    if (list.empty())
+      std::cout << "no OpenCL platform or device found: --device auto uses the reference solver\n";
+    for (const auto& d : list)
+      std::cout << fmt::format("{} opencl:{}  {} / {}  ({}, {}, {} compute units){}\n", d.is_default ? "*" : " ",
+                               d.index, d.platform, d.name, d.type, d.version, d.compute_units,
+                               d.is_default ? "  [default]" : "");
+    std::cout << fmt::format("{} reference  plain C++ solver (the oracle; always available){}\n",
+                             list.empty() ? "*" : " ", list.empty() ? "  [default]" : "");
+  });
+}
+
+}  // namespace heliostand::cli

@@ -1,0 +1,188 @@
+#include "light/light_benchmark.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <thread>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
+
+#include "geometry/angles.hpp"
+#include "light/make_light_solver.hpp"
+#include "light/synthetic_canopy.hpp"
+
+namespace heliostand {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Run {
+  std::string name;
+  bool ran = false;
+  bool estimated = false;       // time extrapolated from the subsample
+  double seconds = 0;           // one evaluation of the whole stand (setup included)
+  double setup_seconds = 0;
+  double mean_candidates = 0;
+  std::vector<LightSample> at_subsample;  // answers at the error-measurement balls
+};
+
+struct Error {
+  double mean_abs_light = 0, max_abs_light = 0, mean_angle_degrees = 0;
+};
+
+Error error_against(const std::vector<LightSample>& truth, const std::vector<LightSample>& test) {
+  Error e;
+  std::size_t angles = 0;
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    const double diff = std::abs(truth[k].light - test[k].light);
+    e.mean_abs_light += diff;
+    e.max_abs_light = std::max(e.max_abs_light, diff);
+    // a balanced sky has no vector; such balls carry no direction error
+    if (glm::length(truth[k].vector) > 0 && glm::length(test[k].vector) > 0) {
+      e.mean_angle_degrees += degrees(std::acos(std::clamp(glm::dot(truth[k].vector, test[k].vector), -1.0, 1.0)));
+      ++angles;
+    }
+  }
+  if (!truth.empty()) e.mean_abs_light /= truth.size();
+  if (angles > 0) e.mean_angle_degrees /= angles;
+  return e;
+}
+
+// Times `solver` on the whole stand, or on the subsample when the stand exceeds `max_balls`.
+Run time_solver(const std::string& name, LightSolver& solver, const std::vector<LeafBall>& balls,
+                const std::vector<std::uint32_t>& subsample, std::size_t max_balls) {
+  Run run;
+  run.name = name;
+  run.ran = true;
+  spdlog::info("bench light: {} balls, {} ({})", balls.size(), name,
+               balls.size() <= max_balls ? "whole stand" : fmt::format("subsample of {}", subsample.size()));
+  if (balls.size() <= max_balls) {
+    const auto start = Clock::now();
+    const auto all = solver.solve(balls);
+    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    for (auto k : subsample) run.at_subsample.push_back(all[k]);
+  } else {
+    run.estimated = true;
+    const auto start = Clock::now();
+    run.at_subsample = solver.solve_for(balls, subsample);
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    const auto& stats = solver.last_statistics();
+    // setup (tree, far field) is per stand; the per-ball part scales with the number of balls
+    run.seconds = stats.setup_seconds + (wall - stats.setup_seconds) * double(balls.size()) / subsample.size();
+  }
+  run.setup_seconds = solver.last_statistics().setup_seconds;
+  run.mean_candidates = solver.last_statistics().mean_candidates;
+  spdlog::info("bench light: {} balls, {}: {:.3f} s{}", balls.size(), name, run.seconds,
+               run.estimated ? " (estimated)" : "");
+  return run;
+}
+
+std::string run_json(const Run& run, const Run& truth) {
+  if (!run.ran) return "null";
+  std::string text = fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "estimated_from_subsample": {})",
+                                 run.seconds, run.setup_seconds, run.estimated ? "true" : "false");
+  if (&run != &truth && truth.ran) {
+    const Error e = error_against(truth.at_subsample, run.at_subsample);
+    text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"
+                        R"("mean_angle_degrees": {:.6g}}})",
+                        e.mean_abs_light, e.max_abs_light, e.mean_angle_degrees);
+  }
+  return text + "}";
+}
+
+std::string ratio(const Run& slow, const Run& fast) {
+  if (!slow.ran || !fast.ran || fast.seconds <= 0) return "null";
+  return fmt::format("{:.4g}", slow.seconds / fast.seconds);
+}
+
+std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_count) {
+  const SyntheticCanopy canopy = make_synthetic_canopy(ball_count, options.seed);
+  const auto& balls = canopy.balls;
+  std::vector<std::uint32_t> subsample;
+  const std::size_t k_count = std::min(options.subsample, balls.size());
+  for (std::size_t k = 0; k < k_count; ++k) subsample.push_back(static_cast<std::uint32_t>(k * balls.size() / k_count));
+
+  LightParameters culled = options.parameters;
+  culled.exact = false;
+  LightParameters exact = culled;
+  exact.exact = true;
+  if (culled.periodic) {
+    for (auto* p : {&culled, &exact}) {
+      p->plot_x_min = p->plot_y_min = 0;
+      p->plot_x_max = p->plot_y_max = canopy.plot_size_m;
+    }
+  }
+
+  auto reference_exact_solver = make_light_solver("reference", exact);
+  auto reference_culled_solver = make_light_solver("reference", culled);
+  Run reference_exact = time_solver("reference exact", *reference_exact_solver, balls, subsample, options.reference_exact_max);
+  Run reference_culled = time_solver("reference culled", *reference_culled_solver, balls, subsample, options.reference_culled_max);
+  Run opencl_exact, opencl_culled;
+  std::string device = "none";
+  if (options.opencl_device != "none") {
+    auto exact_solver = make_light_solver(options.opencl_device, exact);
+    auto culled_solver = make_light_solver(options.opencl_device, culled);
+    device = culled_solver->name();
+    (void)culled_solver->solve(std::span(balls).first(std::min<std::size_t>(balls.size(), 64)));  // warm-up
+    opencl_exact = time_solver("opencl exact", *exact_solver, balls, subsample, options.opencl_exact_max);
+    opencl_culled = time_solver("opencl culled+far-field", *culled_solver, balls, subsample, ball_count);
+  }
+  const bool whole = balls.size() <= options.reference_exact_max;
+  return fmt::format(
+      R"(    {{"balls": {}, "trees": {}, "plot_m": {:.4g}, "opencl_device": "{}",)"
+      "\n"
+      R"(     "build_seconds": {:.6g}, "mean_candidates": {:.6g},)"
+      "\n"
+      R"(     "error_measured_on": {{"balls": {}, "whole_stand": {}}},)"
+      "\n"
+      R"(     "reference_exact": {},)"
+      "\n"
+      R"(     "reference_culled": {},)"
+      "\n"
+      R"(     "opencl_exact": {},)"
+      "\n"
+      R"(     "opencl_culled_far_field": {},)"
+      "\n"
+      R"(     "speedup": {{"opencl_exact_over_reference_exact": {}, "opencl_culled_over_opencl_exact": {}, )"
+      R"("opencl_culled_over_reference_exact": {}, "reference_culled_over_reference_exact": {}}}}})",
+      balls.size(), canopy.tree_count, canopy.plot_size_m, device,
+      opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds,
+      opencl_culled.ran ? opencl_culled.mean_candidates : reference_culled.mean_candidates,
+      whole ? balls.size() : subsample.size(), whole ? "true" : "false",
+      run_json(reference_exact, reference_exact), run_json(reference_culled, reference_exact),
+      run_json(opencl_exact, reference_exact), run_json(opencl_culled, reference_exact),
+      ratio(reference_exact, opencl_exact), ratio(opencl_exact, opencl_culled), ratio(reference_exact, opencl_culled),
+      ratio(reference_exact, reference_culled));
+}
+
+}  // namespace
+
+std::string run_light_benchmark(const LightBenchmarkOptions& options) {
+  const auto& p = options.parameters;
+  std::string text = fmt::format(
+      R"({{"benchmark": "light", "seed": {}, "hardware_threads": {},)"
+      "\n"
+      R"( "parameters": {{"sky_bands": {}, "sky_sectors": {}, "transmittance": {}, "intensity_ratio": {}, )"
+      R"("cutoff_m": {}, "far_field_cell_m": {}, "periodic": {}}},)"
+      "\n"
+      R"( "limits": {{"reference_exact_max": {}, "reference_culled_max": {}, "opencl_exact_max": {}, "subsample": {}}},)"
+      "\n"
+      R"( "note": "above a solver's limit its time is extrapolated from an evenly spaced subsample of balls (setup + per-ball time x N / subsample); errors are measured on that subsample against reference exact",)"
+      "\n"
+      R"( "stands": [)"
+      "\n",
+      options.seed, std::thread::hardware_concurrency(), p.sky_bands, p.sky_sectors, p.transmittance,
+      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.periodic ? "true" : "false", options.reference_exact_max,
+      options.reference_culled_max, options.opencl_exact_max, options.subsample);
+  for (std::size_t k = 0; k < options.ball_counts.size(); ++k) {
+    text += one_stand(options, options.ball_counts[k]);
+    text += k + 1 < options.ball_counts.size() ? ",\n" : "\n";
+  }
+  return text + " ]}\n";
+}
+
+}  // namespace heliostand

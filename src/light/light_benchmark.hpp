@@ -1,0 +1,28 @@
+#pragma once
+// `heliostand bench light`: times the light solvers side by side on reproducible synthetic canopies and
+// measures each one's error against the reference exact solution. Results are JSON (docs/performance.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "light/light_parameters.hpp"
+
+namespace heliostand {
+
+struct LightBenchmarkOptions {
+  std::vector<std::size_t> ball_counts{1000, 10000, 100000};
+  std::uint64_t seed = 1;
+  std::string opencl_device = "opencl";   // the OpenCL rows need a device; "none" skips them
+  LightParameters parameters;             // culled-mode parameters (exact runs set exact = true)
+  // Above these sizes a solver is run on an evenly spaced subsample of balls only and its full-stand time is
+  // extrapolated (each ball's answer is independent of the others, so the subsample answers are exact).
+  std::size_t reference_exact_max = 4000;
+  std::size_t reference_culled_max = 30000;
+  std::size_t opencl_exact_max = 20000;
+  std::size_t subsample = 400;            // balls in the subsample (also where errors are measured)
+};
+
+// Runs the benchmark and returns the JSON report; progress goes to spdlog (stderr).
+std::string run_light_benchmark(const LightBenchmarkOptions& options);
+
+}  // namespace heliostand

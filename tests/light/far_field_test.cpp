@@ -1,0 +1,82 @@
+#include "light/far_field.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace heliostand {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// A periodic 10 m x 10 m plot filled with one ball per 1 m cell (centres at cell centres, so each ball's
+// cross-section lands in its own cell), in ball layers z = 0.5 .. 5.5.
+struct Slab {
+  LightParameters p;
+  std::vector<LeafBall> balls;
+  Slab() {
+    p.periodic = true;
+    p.plot_x_max = p.plot_y_max = 10;
+    p.far_field_cell_m = 1.0;
+    for (int z = 0; z < 6; ++z)
+      for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 10; ++x) balls.push_back({{x + 0.5, y + 0.5, z + 0.5}, 0.2});
+  }
+};
+
+TEST(FarField, DensityIsCrossSectionPerVolume) {
+  Slab slab;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  const double sigma = pi * 0.2 * 0.2;  // per 1 m^3 cell
+  // Inside the slab the lattice deposits exactly sigma into every cell, however the cells fall on it.
+  for (const glm::dvec3 at : {glm::dvec3{3.5, 7.5, 2.5}, glm::dvec3{0.1, 9.9, 3.2}, glm::dvec3{5.0, 5.0, 2.0}})
+    EXPECT_NEAR(far.grid().sample(std::span<const double>(far.density()), at), sigma, 1e-12);
+  // and the deposit is conserved: the whole column holds six balls' cross-sections
+  double column = 0;
+  for (int z = 0; z < far.grid().dims.z; ++z) column += far.density()[far.grid().index(3, 3, z)] * far.grid().cell.z;
+  EXPECT_NEAR(column, 6 * sigma, 1e-12);
+  EXPECT_EQ(far.grid().sample(std::span<const double>(far.density()), {5.0, 5.0, 9.0}), 0.0);
+}
+
+TEST(FarField, OpticalDepthIsDensityTimesSlantPathToTheTop) {
+  Slab slab;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  const double sigma = pi * 0.2 * 0.2;
+  // The lattice stands for a uniform slab 0 < z < 6 (smoothed symmetrically at its faces): from z = 2.5 the
+  // column above holds sigma * 3.5, times 1/cos(polar) along a slanted patch direction. Periodic: slanted
+  // rays wrap instead of leaving the plot.
+  for (int patch : {0, 3 * 32 + 5, 6 * 32 + 17}) {
+    const double cos_polar = sky.patches()[patch].direction.z;
+    const double expected = sigma * 3.5 / cos_polar;
+    EXPECT_NEAR(far.optical_depth({4.5, 4.5, 2.5}, patch), expected, 0.02 * expected) << "patch " << patch;
+    EXPECT_NEAR(far.march({4.5, 4.5, 2.5}, sky.patches()[patch].direction), expected, 0.02 * expected);
+  }
+  // downward: the column below holds sigma * 2.5
+  const int down = 12 * 32 + 3;
+  const double cos_polar = -sky.patches()[down].direction.z;
+  EXPECT_NEAR(far.optical_depth({4.5, 4.5, 2.5}, down), sigma * 2.5 / cos_polar, 0.02 * sigma * 2.5 / cos_polar);
+  // above the grid nothing shades
+  EXPECT_EQ(far.optical_depth({4.5, 4.5, 50.0}, 0), 0.0);
+}
+
+TEST(FarField, OpenStandsEndAtTheirEdges) {
+  Slab slab;
+  slab.p.periodic = false;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  // a nearly horizontal ray from the slab's east edge, pointing east, leaves the canopy at once ...
+  const int east_low = 7 * 32 + 0;   // band 7 (84 deg), sector 0 (azimuth 5.6 deg)
+  const int west_low = 7 * 32 + 16;  // the same band, pointing west across the whole slab
+  const glm::dvec3 east_edge{9.5, 5.0, 2.5};
+  EXPECT_LT(far.march(east_edge, sky.patches()[east_low].direction), 0.5);
+  // ... while the westward one crosses ~9 m of canopy
+  EXPECT_GT(far.march(east_edge, sky.patches()[west_low].direction), 0.9 * pi * 0.04 * 8.5);
+  // and a point outside the grid sees no far field
+  EXPECT_EQ(far.optical_depth({-20, 5, 2.5}, east_low), 0.0);
+}
+
+}  // namespace
+}  // namespace heliostand

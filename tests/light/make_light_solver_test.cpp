@@ -1,0 +1,70 @@
+#include "light/make_light_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "compute/device_choice.hpp"
+#include "light/opencl_light_solver.hpp"
+#include "light/sky_openness.hpp"
+
+namespace heliostand {
+namespace {
+
+using compute::DeviceChoice;
+
+TEST(DeviceChoice, ParsesTheDeviceStrings) {
+  EXPECT_EQ(DeviceChoice::parse("auto").kind, DeviceChoice::Kind::automatic);
+  EXPECT_EQ(DeviceChoice::parse("reference").kind, DeviceChoice::Kind::reference);
+  EXPECT_EQ(DeviceChoice::parse("opencl").kind, DeviceChoice::Kind::opencl);
+  EXPECT_FALSE(DeviceChoice::parse("opencl").opencl_index.has_value());
+  EXPECT_EQ(DeviceChoice::parse("opencl:2").opencl_index, 2);
+  for (const char* bad : {"cuda", "opencl:", "opencl:-1", "opencl:x", "opencl:1x", "Reference"})
+    EXPECT_THROW(DeviceChoice::parse(bad), std::invalid_argument) << bad;
+}
+
+TEST(MakeLightSolver, ReferenceOnRequestOpenCLByDefaultWhenPresent) {
+  const LightParameters p;
+  EXPECT_EQ(make_light_solver("reference", p)->name(), "reference");
+  const auto automatic = make_light_solver("auto", p);
+  if (opencl_available())
+    EXPECT_EQ(automatic->name().rfind("opencl:", 0), 0u) << automatic->name();
+  else
+    EXPECT_EQ(automatic->name(), "reference");  // fallback (with one warning)
+}
+
+TEST(MakeLightSolver, MissingOpenCLDeviceIsAnError) {
+  EXPECT_THROW(make_light_solver("opencl:999", LightParameters{}), std::runtime_error);
+  EXPECT_THROW(make_light_solver("gpu", LightParameters{}), std::invalid_argument);
+}
+
+TEST(MakeLightSolver, BadParametersAreRejectedWithTheFieldName) {
+  LightParameters p;
+  p.transmittance = 1.5;
+  try {
+    make_light_solver("reference", p);
+    FAIL() << "accepted t = 1.5";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("transmittance"), std::string::npos) << e.what();
+  }
+  p = {};
+  p.periodic = true;  // without plot bounds
+  EXPECT_THROW(make_light_solver("reference", p), std::invalid_argument);
+}
+
+TEST(SkyOpenness, IsTheMeanLightOfEachTreesBalls) {
+  std::vector<LightSample> samples(5);
+  const double light[] = {0.2, 0.4, 0.9, 1.0, 0.6};
+  for (int k = 0; k < 5; ++k) samples[k].light = light[k];
+  const std::vector<int> tree{0, 0, 2, 2, 2};
+  const auto openness = sky_openness(samples, tree, 3);
+  ASSERT_EQ(openness.size(), 3u);
+  EXPECT_DOUBLE_EQ(openness[0], 0.3);
+  EXPECT_TRUE(std::isnan(openness[1]));  // no foliage, no view of the sky
+  EXPECT_NEAR(openness[2], 2.5 / 3, 1e-15);
+  EXPECT_THROW(sky_openness(samples, std::vector<int>{0, 0, 3, 0, 0}, 3), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace heliostand
