@@ -4,7 +4,9 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
+#include "cli/devices_command.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -39,17 +41,20 @@ int run(int argc, char** argv) {
   int status = 0;
   add_check_command(app, status);
   add_grow_command(app, status);
-  // add_devices_command(app, status);
-  // add_bench_command(app, status);
+  add_devices_command(app);
+  add_bench_command(app);
 
   app.parse_complete_callback([&] { set_up_logging(quiet ? -1 : verbose); });
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // usage errors are bad input
-  }
-  return status;
+  // Subcommands that do not report their own errors (devices, bench) throw out of parse().
+  return report_errors([&] {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      const int code = app.exit(e);
+      return code == 0 ? 0 : 2;  // usage errors are bad input
+    }
+    return status;
+  });
 }
 
 }  // namespace heliostand::cli

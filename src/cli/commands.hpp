@@ -1,5 +1,5 @@
 #pragma once
-// Each subcommand registers itself on the application; its callback stores the exit status in `status`
+// Each subcommand registers itself (devices and bench: cli/devices_command.hpp, cli/bench_command.hpp) on the application; its callback stores the exit status in `status`
 // (0 success, 1 runtime failure, 2 bad input).
 #include <functional>
 #include <string>
@@ -10,8 +10,6 @@ namespace heliostand::cli {
 
 void add_check_command(CLI::App& app, int& status);
 void add_grow_command(CLI::App& app, int& status);
-void add_devices_command(CLI::App& app, int& status);
-void add_bench_command(CLI::App& app, int& status);
 
 // The command line as typed (argv joined by spaces), for run.json.
 const std::string& invoked_command_line();

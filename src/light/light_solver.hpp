@@ -42,6 +42,8 @@ class LightSolver {
   const LightSolveStatistics& last_statistics() const { return statistics_; }
 
  protected:
+  // Throws std::out_of_range when a receiver index is not a ball of `balls`.
+  static void check_receivers(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers);
   LightSolveStatistics statistics_;
 };
 

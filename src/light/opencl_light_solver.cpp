@@ -86,6 +86,7 @@ std::string OpenCLLightSolver::name() const { return "opencl:" + device_->cl.des
 
 std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> balls,
                                                       std::span<const std::uint32_t> receivers) {
+  check_receivers(balls, receivers);
   statistics_ = {};
   std::vector<LightSample> samples(receivers.size());
   if (receivers.empty()) return samples;
@@ -155,11 +156,11 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   }
 
   const NearFieldSearch search(set, parameters_.cutoff_m);
-  // Without a far field the kernel gets a one-cell empty table and a zero attenuation factor.
+  // Without a far field the kernel gets a one-cell table of zeros and a zero attenuation factor.
   const std::optional<FarField> far =
       parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky) : std::nullopt;
   const VoxelGrid grid = far ? far->grid() : VoxelGrid{};
-  static const std::vector<float> no_table{0.0f};
+  const std::vector<float> no_table(far ? 0 : sky.patches().size(), 0.0f);  // one empty cell
   const cl::Buffer depth_buffer = read_only(context, far ? far->optical_depth() : no_table);
   const glm::dvec3 grid_origin = grid.origin - origin;
   const cl_float4 grid_origin_arg = {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}};

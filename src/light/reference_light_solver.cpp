@@ -39,6 +39,7 @@ ReferenceLightSolver::ReferenceLightSolver(const LightParameters& parameters) : 
 
 std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBall> balls,
                                                          std::span<const std::uint32_t> receivers) {
+  check_receivers(balls, receivers);
   const CelestialSphere sky(parameters_);
   const PlotTorus torus = PlotTorus::from(parameters_);
   const double t = parameters_.transmittance;

@@ -89,6 +89,19 @@ TEST_P(LightSolverTest, BallInsideOneOccluderGetsTAndInsideTwoGetsTSquared) {
   EXPECT_NEAR(enclosed[0].vector.z, 1.0, 1e-6);
 }
 
+TEST_P(LightSolverTest, ShellOfOccludersOnePerPatchGivesExactlyT) {
+  LightParameters p = parameters();
+  p.transmittance = 0.4;
+  // One small ball on every patch's centre ray, 3 m out: angular radius 0.57 deg, less than the closest
+  // spacing of patch centres (1.1 deg, around the poles), so each ray hits exactly one ball.
+  const CelestialSphere sky(p);
+  std::vector<LeafBall> balls{{{0, 0, 0}, 0.1}};
+  for (const auto& patch : sky.patches()) balls.push_back({3.0 * patch.direction, 0.03});
+  const auto samples = solve(p, balls);
+  EXPECT_NEAR(samples[0].light, 0.4, 1e-6);
+  EXPECT_NEAR(samples[0].vector.z, 1.0, 1e-6);  // uniform dimming keeps the direction
+}
+
 TEST_P(LightSolverTest, OccluderStraightAboveShadesExactlyTheBandsWithinItsAngularRadius) {
   LightParameters p = parameters();
   p.transmittance = 0.5;

@@ -53,6 +53,14 @@ TEST(MakeLightSolver, BadParametersAreRejectedWithTheFieldName) {
   EXPECT_THROW(make_light_solver("reference", p), std::invalid_argument);
 }
 
+TEST(MakeLightSolver, ReceiverOutsideTheStandIsAnError) {
+  const std::vector<LeafBall> balls{{{0, 0, 0}, 0.5}, {{0, 0, 2}, 0.5}};
+  const std::vector<std::uint32_t> receivers{1, 2};
+  for (const char* device : {"reference", "auto"})
+    EXPECT_THROW(make_light_solver(device, LightParameters{})->solve_for(balls, receivers), std::out_of_range)
+        << device;
+}
+
 TEST(SkyOpenness, IsTheMeanLightOfEachTreesBalls) {
   std::vector<LightSample> samples(5);
   const double light[] = {0.2, 0.4, 0.9, 1.0, 0.6};
