@@ -327,7 +327,8 @@ double ConiferTree::dbh_cm() const { return StemTaper{height_m(), crown_base_m()
 double ConiferTree::stem_volume_m3() const { return StemTaper{height_m(), crown_base_m()}.volume_m3(species_); }
 
 bool ConiferTree::carries_foliage(const Shoot& shoot) const {
-  return shoot.alive && age_ - shoot.year_formed < species_.foliage_years;
+  return shoot.alive && shoot.order <= species_.foliage_max_order &&
+         age_ - shoot.year_formed < species_.foliage_years;
 }
 
 std::vector<LeafBall> ConiferTree::leaf_balls() const {

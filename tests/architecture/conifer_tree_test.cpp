@@ -240,22 +240,47 @@ TEST(ConiferTree, GrowingOtherTreesInBetweenChangesNothing) {
 TEST(ConiferTree, LeafBallsOnRecentLivingShootsWithClampedRadius) {
   const ConiferTree tree = grown(20);
   const SpeciesParameters species;
-  std::size_t expected = 0;
-  for (const Shoot& s : tree.shoots())
-    if (s.alive && s.year_formed > 20 - species.foliage_years) ++expected;
+  // A leaf ball on every living shoot of the last foliage_years years whose order is at most
+  // foliage_max_order (default 1: stem and first-order shoots; their laterals' foliage is lumped in).
+  auto carries = [&](const Shoot& s) {
+    return s.alive && s.order <= species.foliage_max_order && s.year_formed > 20 - species.foliage_years;
+  };
+  std::size_t expected = 0, second_order = 0;
+  for (const Shoot& s : tree.shoots()) {
+    if (carries(s)) ++expected;
+    if (s.alive && s.order == 2) ++second_order;
+  }
+  ASSERT_GT(second_order, 0u) << "the tree must have laterals for this test to mean anything";
   const auto balls = tree.leaf_balls();
   EXPECT_EQ(balls.size(), expected);
   const auto owners = tree.foliage_shoot_indices();
   ASSERT_EQ(owners.size(), balls.size());
-  for (std::size_t b = 0; b < balls.size(); ++b) EXPECT_EQ(tree.shoots()[owners[b]].tip, balls[b].centre);
+  for (std::size_t b = 0; b < balls.size(); ++b) {
+    EXPECT_EQ(tree.shoots()[owners[b]].tip, balls[b].centre);
+    EXPECT_LE(tree.shoots()[owners[b]].order, species.foliage_max_order);
+  }
   std::size_t ball = 0;
   for (const Shoot& s : tree.shoots()) {
-    if (!(s.alive && s.year_formed > 20 - species.foliage_years)) continue;
+    if (!carries(s)) continue;
     const double length = glm::length(s.tip - s.base);
     EXPECT_EQ(balls[ball].centre, s.tip);
     EXPECT_NEAR(balls[ball].radius, std::clamp(2.0 * length, 0.05, 0.6), 1e-12);
     ++ball;
   }
+}
+
+TEST(ConiferTree, FoliageMaxOrderGivesLateralsTheirOwnLeafBalls) {
+  SpeciesParameters every_order;
+  every_order.foliage_max_order = 3;
+  ConiferTree lumped(SpeciesParameters{}, TreeCalibration{}, {0, 0, 0}, 1, 0);
+  ConiferTree own(every_order, TreeCalibration{}, {0, 0, 0}, 1, 0);
+  lumped.grow_to_age(20);
+  own.grow_to_age(20);
+  std::size_t recent_living = 0;
+  for (const Shoot& s : own.shoots())
+    if (s.alive && s.year_formed > 20 - every_order.foliage_years) ++recent_living;
+  EXPECT_EQ(own.leaf_balls().size(), recent_living);
+  EXPECT_GT(own.leaf_balls().size(), 2 * lumped.leaf_balls().size());
 }
 
 TEST(ConiferTree, CrownRadiusOfATwoYearOldIsTheMeanSectorReach) {
