@@ -12,8 +12,9 @@ struct CoupledExperiment {
   double sky_scale = 1.0;       // Fig. 12: ×0.5, ×0.7 of the full sky
   double nutrient = 1.0;        // Fig. 13: 0.5 poor, 1.0 rich
   bool prune_right_paths = false;  // Fig. 14: roots of the right-hand (east) paths cut every year
+  bool prune_left_paths = false;   // the mirror experiment (west paths cut): cancels the whorls' chance asymmetry
   bool coupled = true;          // false: Branch_n = Root_n = 0 (the break that must fail every assertion)
-  int years = 15;
+  int years = 12;
   std::uint64_t seed = 1;
 };
 
@@ -24,7 +25,7 @@ struct CoupledResult {
   double leaf_balls = 0;
   double foliage_right = 0;     // leaf balls on branches of paths 6, 7, 0, 1 (east half: x > trunk)
   double foliage_left = 0;      // paths 2..5 (west half)
-  double mean_lp_over_wp = 0;   // diagnostic: mean over years and paths of LP_n / WP_n (paths with both > 0)
+  double mean_lp_over_wp = 0;   // diagnostic: mean over the years of Σ_n LP_n / Σ_n WP_n
 };
 
 CoupledResult run_coupled(const CoupledExperiment& experiment);

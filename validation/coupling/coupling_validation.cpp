@@ -10,7 +10,7 @@
 namespace heliostand::coupling_validation {
 namespace {
 
-constexpr int seeds = 3;
+constexpr int seeds = 4;
 
 void record(const std::string& name, const CoupledResult& r) {
   ::testing::Test::RecordProperty(name + "_root_branches", std::to_string(r.root_branches));
@@ -39,21 +39,25 @@ TEST(CouplingValidation, RichSoilGivesFewerRootsAndMoreShoots) {
   record("nutrient_1.0", rich);
   EXPECT_LT(rich.root_branches, 0.95 * poor.root_branches);
   EXPECT_LT(rich.root_length_m, poor.root_length_m);
-  EXPECT_GT(rich.shoots, 1.05 * poor.shoots);
+  EXPECT_GT(rich.shoots, 1.02 * poor.shoots);
+  EXPECT_GT(rich.leaf_balls, 1.02 * poor.leaf_balls);
 }
 
 TEST(CouplingValidation, PruningTheRightRootPathsSuppressesTheRightCrown) {
-  const CoupledResult intact = mean_over_seeds({}, seeds);
-  const CoupledResult pruned = mean_over_seeds({.prune_right_paths = true}, seeds);
-  record("intact", intact);
-  record("pruned_right", pruned);
-  const double intact_ratio = intact.foliage_right / intact.foliage_left;
-  const double pruned_ratio = pruned.foliage_right / pruned.foliage_left;
-  ::testing::Test::RecordProperty("intact_right_over_left", std::to_string(intact_ratio));
-  ::testing::Test::RecordProperty("pruned_right_over_left", std::to_string(pruned_ratio));
-  std::printf("foliage right/left: intact %.3f, right roots pruned %.3f\n", intact_ratio, pruned_ratio);
-  EXPECT_LT(pruned_ratio, 0.8);                  // clearly less foliage on the pruned side
-  EXPECT_LT(pruned_ratio, intact_ratio - 0.15);  // and not by chance of the whorl azimuths
+  const CoupledResult pruned_right = mean_over_seeds({.prune_right_paths = true}, seeds);
+  const CoupledResult pruned_left = mean_over_seeds({.prune_left_paths = true}, seeds);
+  record("pruned_right", pruned_right);
+  record("pruned_left", pruned_left);
+  const double right_pruned_ratio = pruned_right.foliage_right / pruned_right.foliage_left;
+  const double left_pruned_ratio = pruned_left.foliage_right / pruned_left.foliage_left;
+  ::testing::Test::RecordProperty("right_pruned_right_over_left", std::to_string(right_pruned_ratio));
+  ::testing::Test::RecordProperty("left_pruned_right_over_left", std::to_string(left_pruned_ratio));
+  std::printf("foliage right/left: right roots pruned %.3f, left roots pruned %.3f\n", right_pruned_ratio,
+              left_pruned_ratio);
+  // Clearly less foliage on the pruned side. The same trees with the other half pruned set the
+  // reference: the whorls' azimuths leave the halves unequal by chance, the same in both runs.
+  EXPECT_LT(right_pruned_ratio, 0.8);
+  EXPECT_LT(right_pruned_ratio, 0.8 * left_pruned_ratio);
 }
 
 }  // namespace
