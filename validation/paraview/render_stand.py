@@ -108,8 +108,12 @@ def show_roots(reader, view):
     return tubes
 
 
-def show_ground(bounds, view, opacity=1.0):
+def show_ground(bounds, view, opacity=1.0, surface_z=None):
+    """The ground plane at the soil surface (z = 0 where stems stand when the soil block is in the
+    bounds), else at the bottom of the data."""
     x0, x1, y0, y1, z0, _ = bounds
+    if surface_z is not None:
+        z0 = surface_z
     margin = 0.05 * max(x1 - x0, y1 - y0, 1.0)
     ground = Plane(Origin=[x0 - margin, y0 - margin, z0], Point1=[x1 + margin, y0 - margin, z0],
                    Point2=[x0 - margin, y1 + margin, z0])
@@ -162,7 +166,7 @@ def main(argv):
     view.ViewTime = times[-1]
     tubes.UpdatePipeline(times[-1])
     bounds = reader.GetDataInformation().GetBounds()
-    show_ground(bounds, view, opacity=0.35 if roots else 1.0)
+    show_ground(bounds, view, opacity=0.35 if roots else 1.0, surface_z=0.0 if roots else None)
     frame_stand(view, bounds)
 
     written = []
