@@ -152,7 +152,8 @@ void ConiferTree::sprout_laterals(int parent_axis, int bearing_shoot) {
   if (!still_growing(0.0, growth_stop_years(species_, calibration_.growth_stop_years_first_order, order))) return;
   const Shoot bearing = shoots_[bearing_shoot];
   const double parent_elongation = shoot_length(bearing);
-  const double probability = lateral_occurrence_probability(species_, order, parent_elongation);
+  const double probability =
+      with_branching_bonus(lateral_occurrence_probability(species_, order, parent_elongation), parent_axis);
   const double initial = lower_order_initial_elongation_m(species_, parent_elongation);
   RandomStream random(seed_, {static_cast<std::uint64_t>(tree_id_), static_cast<std::uint64_t>(age_), kLateralPair,
                               static_cast<std::uint64_t>(axes_[parent_axis].id)});
@@ -168,6 +169,16 @@ void ConiferTree::sprout_laterals(int parent_axis, int bearing_shoot) {
     const int axis = add_axis(order, parent_axis, initial, 0.0);
     add_shoot(axis, bearing_shoot, bearing.tip, bearing.tip + glm::normalize(direction) * initial);
   }
+}
+
+// Crown–root coupling: the path of a lateral is the sector of its first-order branch's azimuth on the trunk.
+double ConiferTree::with_branching_bonus(double probability, int axis_index) const {
+  const int first_order = axes_[axis_index].first_order_root;
+  if (probability <= 0.0 || first_order < 0) return probability;
+  double azimuth = std::fmod(axes_[first_order].azimuth_rad, 2.0 * pi);
+  if (azimuth < 0.0) azimuth += 2.0 * pi;
+  const int path = std::clamp(static_cast<int>(azimuth / (pi / 4.0)), 0, 7);
+  return std::clamp(probability + branching_bonus_[path], 0.0, 1.0);
 }
 
 // This year's whorl flushes at the tip of last year's leader; its branches' tips start on the crown cone (eq. 9).

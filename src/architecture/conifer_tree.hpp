@@ -2,6 +2,7 @@
 // One conifer grown by the seed-001 rules (Ohsaki et al.): a stem growing by the Chapman–Richards
 // height curve, whorls of first-order branches, opposite pairs of lower-order branches, growth stop by
 // order, dead branches that persist and then fall tip-first. docs/model.md "Seed 001" explains each rule.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -54,6 +55,12 @@ class ConiferTree {
   // Remove a shoot with everything it carries (the rest of its axis and all laterals on them).
   void remove_shoot(int shoot_index);
 
+  // Crown–root coupling (seed 003's Branch_n, src/coupling/): bonus[n] is added to the flushing probability
+  // (clamped to 0..1) of every lateral bud on a branch whose first-order axis leaves the trunk in path n
+  // (45° sector of its azimuth, counter-clockwise from +x). A bud whose own probability is 0 stays off.
+  void set_branching_bonus(const std::array<double, 8>& bonus) { branching_bonus_ = bonus; }
+  const std::array<double, 8>& branching_bonus() const { return branching_bonus_; }
+
  private:
   double height_at(int age) const;
   int add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip);
@@ -79,6 +86,8 @@ class ConiferTree {
   int next_axis_id_ = 0;
   std::vector<Shoot> shoots_;
   std::vector<BranchAxis> axes_;  // axes_[0] is the stem
+  std::array<double, 8> branching_bonus_{};  // crown–root coupling, by path
+  double with_branching_bonus(double probability, int axis_index) const;
 };
 
 }  // namespace heliostand

@@ -5,6 +5,7 @@
 // Extending: a later feature (roots, soil grid, trunk or hollow meshes) adds its data here — a field on
 // TreeSnapshot for per-tree geometry, a field on StandSnapshot for stand-wide grids — and registers a
 // block builder (io/vtk_stand_blocks.hpp) that turns it into one named block of the yearly multiblock.
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct TreeSnapshot {
   double crown_radius_m = 0;
   double volume_m3 = 0;             // stem volume
   double mean_light = 0;            // mean relative light of the tree's leaf balls (0..1); NaN if unknown
+  // Roots (stand/root_zone.hpp, filled by RootZone::annotate); NaN when roots are off or the tree is gone.
+  double root_length_m = std::numeric_limits<double>::quiet_NaN();
+  double root_max_depth_m = std::numeric_limits<double>::quiet_NaN();
+  double root_uptake = std::numeric_limits<double>::quiet_NaN();  // available uptake Σ W_j·moisture·nutrient
 
   // Geometry. `shoots` is a view into the tree's own shoot list (copying millions of shoots per output
   // year would cost more than writing them): it must stay valid while the snapshot is being written.

@@ -37,7 +37,8 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
 
 void write_trees_header(CsvWriter& csv) {
   csv.header({"stand_age", "tree_id", "label", "x_m", "y_m", "status", "age", "height_m", "dbh_cm", "crown_base_m",
-              "crown_radius_m", "volume_m3", "leaf_balls", "mean_light"});
+              "crown_radius_m", "volume_m3", "leaf_balls", "mean_light",
+              "root_length_m", "root_max_depth_m", "root_uptake"});
 }
 
 void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
@@ -56,6 +57,9 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .number(tree.volume_m3, kVolume)
         .integer(static_cast<long long>(tree.leaf_balls.size()))
         .number(tree.mean_light, kLight)
+        .number(tree.root_length_m, kMetres)
+        .number(tree.root_max_depth_m, kMetres)
+        .number(tree.root_uptake, kLight)
         .end_row();
   }
 }

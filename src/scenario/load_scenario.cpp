@@ -15,12 +15,16 @@ namespace heliostand {
 namespace scenario_detail {
 
 std::span<const TableParserEntry> scenario_table_parsers() {
-  static constexpr std::array<TableParserEntry, 5> parsers{{
+  static constexpr std::array<TableParserEntry, 9> parsers{{
       {"stand", parse_stand},
       {"run", parse_run},
       {"species", parse_species},
       {"light", parse_light},
       {"thinning", parse_thinning},
+      {"roots", parse_roots},  // after species: [roots.SPECIES] names a species
+      {"soil", parse_soil},
+      {"coupling", parse_coupling},
+      {"root_pruning", parse_root_pruning},
   }};
   return parsers;
 }

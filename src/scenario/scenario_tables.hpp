@@ -49,6 +49,12 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
 void parse_species(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+// Roots, soil, crown–root coupling and root pruning (parse_roots.cpp, parse_soil.cpp, parse_coupling.cpp,
+// parse_root_pruning.cpp): all fill Scenario::roots.
+void parse_roots(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_coupling(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_root_pruning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 
 // After the survey is read: thinning ids exist and are removed once; stem targets fall over time. Then
 // sorts the events by age.

@@ -9,6 +9,7 @@
 #include "light/make_light_solver.hpp"
 #include "stand/establishment.hpp"
 #include "stand/progress.hpp"
+#include "stand/root_zone.hpp"
 #include "stand/snapshot.hpp"
 #include "stand/stand.hpp"
 
@@ -88,6 +89,9 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                report.unusable);
   Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
               schedule(scenario));
+  // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
+  auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand); });
+  if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
 
   ProgressLine progress(scenario.run.years, options.show_progress);
   SnapshotTracker snapshots;
@@ -95,10 +99,16 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
     const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
     spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
+    if (roots) clock.time("roots", [&] { year > 0 ? roots->grow_year(stand) : roots->couple(stand); return 0; });
     const auto removals = stand.thin();
     output.record_events(removals);
     if (is_output_year(scenario, year))
-      clock.time("output", [&] { output.write_year(snapshots.take(stand, year)); return 0; });
+      clock.time("output", [&] {
+        StandSnapshot snapshot = snapshots.take(stand, year);
+        if (roots) roots->annotate(snapshot);
+        output.write_year(snapshot);
+        return 0;
+      });
     progress.update(year);
   }
   progress.finish();

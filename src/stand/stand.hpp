@@ -25,6 +25,8 @@ class Stand {
   int stand_age() const { return stand_age_; }
   double plot_area_ha() const { return plot_area_ha_; }
   const std::vector<StandTree>& trees() const { return trees_; }
+  // Mutable access for per-tree hooks kept outside the stand (crown–root coupling, stand/root_zone.hpp).
+  StandTree& tree_at(std::size_t index) { return trees_.at(index); }
 
   // Every living tree grows one year; the stand ages by one.
   void grow_year();

@@ -73,7 +73,8 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
                             "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha"}));
   EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status", "age",
                                                   "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",
-                                                  "volume_m3", "leaf_balls", "mean_light"}));
+                                                  "volume_m3", "leaf_balls", "mean_light", "root_length_m",
+                                                  "root_max_depth_m", "root_uptake"}));
   EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "event", "reason", "dbh_cm",
                                                   "height_m", "volume_m3"}));
 }

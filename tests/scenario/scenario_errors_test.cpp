@@ -52,9 +52,9 @@ TEST(ScenarioErrors, MissingTablesAndRequiredKeys) {
 }
 
 TEST(ScenarioErrors, UnknownKeysAndTables) {
-  EXPECT_THAT(problems_of("unknown", minimal_stand + "yeras = 3\n[roots]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
-              ElementsAre("scenario.toml:12: key 'roots': unknown table or key (known: stand, run, species, light, "
-                          "thinning)",
+  EXPECT_THAT(problems_of("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
+              ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
+                          "thinning, roots, soil, coupling, root_pruning)",
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: device, output_interval, "
                           "seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "

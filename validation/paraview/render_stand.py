@@ -4,13 +4,15 @@
 
 Branches become tubes whose radius is the wood radius written as point data (Tube filter,
 "Vary Radius: By Absolute Scalar"); leaf balls become spheres of their own radius coloured by
-their relative light. One PNG for the first and one for the last time step, both framed on the
+their relative light. Roots (a `roots` block, written when the scenario has roots on) become tubes of
+their own radius below a half-transparent ground. One PNG for the first and one for the last time step, both framed on the
 stand as it is at the last time step so the two images compare directly.
 """
 import os
 import sys
+import xml.etree.ElementTree as ElementTree
 
-from paraview.simple import (ColorBy, CreateView, Delete, ExtractBlock, GetColorTransferFunction,
+from paraview.simple import (Calculator, ColorBy, CreateView, Delete, ExtractBlock, GetColorTransferFunction,
                              GetScalarBar, Glyph, Plane, PVDReader, Render, SaveScreenshot, Show, Tube)
 
 IMAGE_SIZE = [1200, 800]
@@ -19,6 +21,7 @@ DEAD_WOOD = [0.60, 0.58, 0.55]
 GROUND = [0.55, 0.62, 0.45]
 SKY = [0.86, 0.91, 0.97]
 INK = [0.1, 0.1, 0.1]
+ROOT = [0.78, 0.62, 0.42]
 
 
 def time_steps(reader):
@@ -74,14 +77,50 @@ def show_leaf_balls(reader, view):
     return spheres
 
 
-def show_ground(bounds, view):
+def has_block(pvd, name):
+    """True if the last year's multiblock file of the series names a block `name`."""
+    try:
+        datasets = ElementTree.parse(pvd).getroot().iter("DataSet")
+        files = [d.get("file") for d in datasets if d.get("file")]
+        if not files:
+            return False
+        vtm = os.path.join(os.path.dirname(pvd), files[-1])
+        return any(b.get("name") == name for b in ElementTree.parse(vtm).getroot().iter())
+    except (OSError, ElementTree.ParseError):
+        return False
+
+
+def show_roots(reader, view):
+    """Root segments as tubes of their own radius (fine roots are sub-millimetre: a floor keeps them
+    visible at stand scale without changing the coarse roots)."""
+    floored = Calculator(Input=block(reader, "roots"))
+    floored.AttributeType = "Point Data"
+    floored.ResultArrayName = "tube_radius"
+    floored.Function = "max(radius, 0.004)"
+    tubes = Tube(Input=floored)
+    tubes.Scalars = ["POINTS", "tube_radius"]
+    tubes.VaryRadius = "By Absolute Scalar"
+    tubes.NumberofSides = 6
+    display = Show(tubes, view)
+    display.ColorArrayName = ["POINTS", ""]
+    display.AmbientColor = ROOT
+    display.DiffuseColor = ROOT
+    return tubes
+
+
+def show_ground(bounds, view, opacity=1.0, surface_z=None):
+    """The ground plane at the soil surface (z = 0 where stems stand when the soil block is in the
+    bounds), else at the bottom of the data."""
     x0, x1, y0, y1, z0, _ = bounds
+    if surface_z is not None:
+        z0 = surface_z
     margin = 0.05 * max(x1 - x0, y1 - y0, 1.0)
     ground = Plane(Origin=[x0 - margin, y0 - margin, z0], Point1=[x1 + margin, y0 - margin, z0],
                    Point2=[x0 - margin, y1 + margin, z0])
     display = Show(ground, view)
     display.AmbientColor = GROUND
     display.DiffuseColor = GROUND
+    display.Opacity = opacity
 
 
 def frame_stand(view, bounds):
@@ -119,12 +158,15 @@ def main(argv):
 
     tubes = show_branches(reader, view)
     show_leaf_balls(reader, view)
+    roots = has_block(pvd, "roots")
+    if roots:
+        show_roots(reader, view)
 
     # Frame on the last (largest) year so both images share one camera.
     view.ViewTime = times[-1]
     tubes.UpdatePipeline(times[-1])
     bounds = reader.GetDataInformation().GetBounds()
-    show_ground(bounds, view)
+    show_ground(bounds, view, opacity=0.35 if roots else 1.0, surface_z=0.0 if roots else None)
     frame_stand(view, bounds)
 
     written = []
