@@ -53,6 +53,12 @@ class ConiferTree {
   void bend_shoot(int shoot_index, glm::dvec3 direction);
   // Remove a shoot with everything it carries (the rest of its axis and all laterals on them).
   void remove_shoot(int shoot_index);
+  // Seed 000's death rule on this year's shoots (stand/light_response.hpp): each listed branch shoot dies, and
+  // with it its axis and every lateral the axis carries; they persist as dead wood and fall by eq. 13.
+  // Stem shoots are ignored (the stem's fate is the tree's). Returns the number of axes killed.
+  int kill_shaded_shoots(const std::vector<int>& shoot_indices);
+  // Whether any living branch shoot still carries foliage.
+  bool has_living_branch_foliage() const;
 
  private:
   double height_at(int age) const;

@@ -72,6 +72,14 @@ struct SpeciesParameters {
   // ours: a shoot keeps its foliage (and its leaf ball) for this many years, counting the year it flushed
   // (Todomatsu keeps needles several years; 5 keeps the ball count of a 35-year tree in the thousands).
   int foliage_years = 5;
+
+  // Light response (seed 000 on the seed-001 architecture; docs/model.md "Seed 000 in the conifer stand").
+  // Every new branch shoot turns toward its light vector by the fraction I and dies with its axis when its
+  // light is below its own threshold D = D0 + dither * U(-1, 1). Conifer defaults are calibrated for the stand's
+  // dense foliage (docs/model.md); seed 000's Table 1 values (D0 = 0.6, dither 0.3) would kill every shoot.
+  double heliotropism_strength = 0.4;    // I (Table 1)
+  double death_threshold = 0.04;         // D0 for conifers (calibrated, docs/model.md)
+  double death_threshold_dither = 0.02;  // half of D0: the seed's 0.3 / 0.6 relative dither
 };
 
 }  // namespace heliostand

@@ -95,6 +95,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
     const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
     spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
+    // The established trees grew without neighbours; competition acts from the first simulated year on.
+    if (year > 0) output.record_events(stand.respond_to_light(scenario.run.seed));
     const auto removals = stand.thin();
     output.record_events(removals);
     if (is_output_year(scenario, year))

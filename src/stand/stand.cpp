@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "stand/light_response.hpp"
+
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
@@ -36,6 +38,23 @@ std::size_t Stand::illuminate(LightSolver& solver) {
     trees_[i].leaf_ball_light.assign(samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i]),
                                      samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i + 1]));
   return balls.size();
+}
+
+std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
+  std::vector<TreeEvent> deaths;
+  for (StandTree& tree : trees_) {
+    if (!tree.alive()) continue;
+    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, seed);
+    if (!outcome.tree_died) continue;
+    tree.status = TreeStatus::dead;
+    tree.status_changed_at_age = stand_age_;
+    tree.status_reason = "light";
+    tree.leaf_ball_light.clear();
+    deaths.push_back({stand_age_, tree.id, tree.label, TreeEventKind::died, "light", tree.tree.dbh_cm(),
+                      tree.tree.height_m(), tree.tree.stem_volume_m3()});
+  }
+  if (!deaths.empty()) spdlog::info("age {}: {} trees died of light", stand_age_, deaths.size());
+  return deaths;
 }
 
 std::vector<TreeEvent> Stand::thin() {

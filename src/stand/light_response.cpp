@@ -1,0 +1,51 @@
+#include "stand/light_response.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "architecture/death_threshold.hpp"
+#include "architecture/heliotropism.hpp"
+#include "rng/random_stream.hpp"
+
+namespace heliostand {
+
+namespace {
+constexpr std::uint64_t kShootThreshold = 0x5EED000u;
+}
+
+LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSample> light, std::uint64_t seed) {
+  const std::vector<int> foliage = tree.foliage_shoot_indices();
+  if (light.size() != foliage.size())
+    throw std::invalid_argument("respond_to_light: " + std::to_string(light.size()) + " light samples for " +
+                                std::to_string(foliage.size()) + " leaf balls of tree " + std::to_string(tree.id()));
+  const SpeciesParameters& species = tree.species();
+  const DeathThreshold threshold{species.death_threshold, species.death_threshold_dither};
+  LightResponseOutcome outcome;
+  std::vector<int> shaded_out;
+  for (std::size_t k = 0; k < foliage.size(); ++k) {
+    const int s = foliage[k];
+    const Shoot& shoot = tree.shoots()[s];
+    if (shoot.year_formed != tree.age()) continue;
+    ++outcome.new_shoots;
+    RandomStream random(seed, {kShootThreshold, static_cast<std::uint64_t>(tree.id()),
+                               static_cast<std::uint64_t>(tree.age()), static_cast<std::uint64_t>(s)});
+    const bool dies = dies_of_shade(light[k].light, threshold.draw(random));
+    if (shoot.order == 0) {
+      outcome.leader_shaded = outcome.leader_shaded || dies;
+    } else if (dies) {
+      shaded_out.push_back(s);
+    } else if (species.heliotropism_strength > 0.0) {
+      // A new shoot carries nothing yet: bending it moves only itself.
+      tree.bend_shoot(s, heliotropic_direction(shoot.tip - shoot.base, light[k].vector, species.heliotropism_strength));
+      ++outcome.bent;
+    }
+  }
+  outcome.shaded_out = static_cast<int>(shaded_out.size());
+  outcome.axes_killed = tree.kill_shaded_shoots(shaded_out);
+  outcome.tree_died = outcome.leader_shaded && !tree.has_living_branch_foliage();
+  return outcome;
+}
+
+}  // namespace heliostand
