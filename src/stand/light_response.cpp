@@ -1,5 +1,6 @@
 #include "stand/light_response.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -15,10 +16,24 @@ namespace {
 constexpr std::uint64_t kShootThreshold = 0x5EED000u;
 }
 
-LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSample> light, std::uint64_t seed) {
+std::vector<LightSample> open_grown_light(const ConiferTree& tree, LightSolver& solver) {
+  const std::vector<LeafBall> balls = tree.leaf_balls();
   const std::vector<int> foliage = tree.foliage_shoot_indices();
-  if (light.size() != foliage.size())
-    throw std::invalid_argument("respond_to_light: " + std::to_string(light.size()) + " light samples for " +
+  std::vector<std::uint32_t> fresh;
+  for (std::size_t k = 0; k < foliage.size(); ++k)
+    if (tree.shoots()[foliage[k]].year_formed == tree.age()) fresh.push_back(static_cast<std::uint32_t>(k));
+  std::vector<LightSample> light(balls.size());
+  const std::vector<LightSample> solved = solver.solve_for(balls, fresh);
+  for (std::size_t r = 0; r < fresh.size(); ++r) light[fresh[r]] = solved[r];
+  return light;
+}
+
+LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSample> light,
+                                      std::span<const LightSample> open_light, std::uint64_t seed) {
+  const std::vector<int> foliage = tree.foliage_shoot_indices();
+  if (light.size() != foliage.size() || open_light.size() != foliage.size())
+    throw std::invalid_argument("respond_to_light: " + std::to_string(light.size()) + " stand and " +
+                                std::to_string(open_light.size()) + " open-grown light samples for " +
                                 std::to_string(foliage.size()) + " leaf balls of tree " + std::to_string(tree.id()));
   const SpeciesParameters& species = tree.species();
   const DeathThreshold threshold{species.death_threshold, species.death_threshold_dither};
@@ -31,7 +46,9 @@ LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSa
     ++outcome.new_shoots;
     RandomStream random(seed, {kShootThreshold, static_cast<std::uint64_t>(tree.id()),
                                static_cast<std::uint64_t>(tree.age()), static_cast<std::uint64_t>(s)});
-    const bool dies = dies_of_shade(light[k].light, threshold.draw(random));
+    // Neighbours can only take light away; an open-grown ball in total darkness has nothing to lose.
+    const double relative = open_light[k].light > 0.0 ? std::min(1.0, light[k].light / open_light[k].light) : 1.0;
+    const bool dies = dies_of_shade(relative, threshold.draw(random));
     if (shoot.order == 0) {
       outcome.leader_shaded = outcome.leader_shaded || dies;
     } else if (dies) {

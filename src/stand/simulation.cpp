@@ -96,7 +96,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
     spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
     // The established trees grew without neighbours; competition acts from the first simulated year on.
-    if (year > 0) output.record_events(stand.respond_to_light(scenario.run.seed));
+    if (year > 0)
+      output.record_events(clock.time("light response", [&] { return stand.respond_to_light(*solver, scenario.run.seed); }));
     const auto removals = stand.thin();
     output.record_events(removals);
     if (is_output_year(scenario, year))

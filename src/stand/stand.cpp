@@ -40,11 +40,12 @@ std::size_t Stand::illuminate(LightSolver& solver) {
   return balls.size();
 }
 
-std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
+std::vector<TreeEvent> Stand::respond_to_light(LightSolver& solver, std::uint64_t seed) {
   std::vector<TreeEvent> deaths;
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
-    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, seed);
+    const std::vector<LightSample> open = open_grown_light(tree.tree, solver);
+    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, open, seed);
     if (!outcome.tree_died) continue;
     tree.status = TreeStatus::dead;
     tree.status_changed_at_age = stand_age_;

@@ -33,9 +33,9 @@ class Stand {
   // Returns the number of leaf balls lit.
   std::size_t illuminate(LightSolver& solver);
   // Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their light
-  // vector or die of shade; trees left without foliage die (cause "light"). Call after illuminate().
-  // Returns the deaths.
-  std::vector<TreeEvent> respond_to_light(std::uint64_t seed);
+  // vector or die of shade; trees left without foliage die (cause "light"). Call after illuminate(); `solver`
+  // also lights each tree alone (the open-grown reference). Returns the deaths.
+  std::vector<TreeEvent> respond_to_light(LightSolver& solver, std::uint64_t seed);
   // Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 

@@ -195,6 +195,17 @@ TEST(CrownMetrics, MeasuresExtentsDroopAndSpread) {
   // Nearest in top view: (0,0)->2, (2,0)->2, (0,4)->4 (to (0,0)), (-2,0)->2.
   EXPECT_NEAR(m.nearest_neighbour, (2.0 + 2.0 + 4.0 + 2.0) / 4.0, 1e-12);
   EXPECT_DOUBLE_EQ(m.min_x, -2.0);
+  // 2 x 2 cells over x in [-2, 2], y in [0, 4]: counts 1, 2 (bottom row), 0, 1 (top row): mean 1, sd sqrt(0.5).
+  EXPECT_NEAR(measure_crown(tips, 2.0).quadrat_cv, std::sqrt(0.5), 1e-12);
+  // Within 2.5 in top view: (0,0) has (2,0) and (-2,0); each of those has (0,0); (0,4) none: 4 / 4.
+  EXPECT_DOUBLE_EQ(measure_crown(tips, 2.0, 2.5).crowding, 1.0);
+}
+
+TEST(CrownMetrics, BoughBaseIsTheAncestorGenerationsBackButNotTheRoot) {
+  DichotomyTree tree({root_branch({0.0, 0.0, 0.0}, 15.0)}, 10.0, 1);
+  for (int g = 0; g < 3; ++g) tree.add_generation(never_dies);
+  for (const CrownTip& tip : crown_tips(tree, -1, 10)) EXPECT_DOUBLE_EQ(tip.branch_base_z, 15.0);  // first fork
+  for (const CrownTip& tip : crown_tips(tree, -1, 1)) EXPECT_GT(tip.branch_base_z, 15.9);  // parent's base
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "light/reference_light_solver.hpp"
 #include "stand/light_response.hpp"
 
 namespace heliostand {
@@ -22,6 +23,9 @@ std::vector<LightSample> uniform_light(const ConiferTree& tree, double light, gl
   return std::vector<LightSample>(tree.leaf_balls().size(), LightSample{light, vector});
 }
 
+// Open-grown reference light 1 everywhere: the relative light is the stand light itself.
+std::vector<LightSample> open_light_of(const ConiferTree& tree) { return uniform_light(tree, 1.0, {0.0, 0.0, 1.0}); }
+
 double angle_between(glm::dvec3 a, glm::dvec3 b) {
   return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0));
 }
@@ -30,7 +34,7 @@ TEST(LightResponse, LitNewBranchShootsTurnTowardTheLightVectorByI) {
   ConiferTree tree = young_tree();
   const ConiferTree before = tree;
   const glm::dvec3 east{1.0, 0.0, 0.0};
-  const auto outcome = respond_to_light(tree, uniform_light(tree, 1.0, east), 1);
+  const auto outcome = respond_to_light(tree, uniform_light(tree, 1.0, east), open_light_of(tree), 1);
   EXPECT_FALSE(outcome.tree_died);
   EXPECT_EQ(outcome.shaded_out, 0);
   ASSERT_GT(outcome.bent, 0);
@@ -61,7 +65,7 @@ TEST(LightResponse, ShadedNewShootsDieWithTheirAxisAndTheDeadWoodStays) {
     const Shoot& shoot = tree.shoots()[s];
     light.push_back({shoot.order > 0 && shoot.year_formed == tree.age() ? 0.0 : 1.0, {0.0, 0.0, 1.0}});
   }
-  const auto outcome = respond_to_light(tree, light, 1);
+  const auto outcome = respond_to_light(tree, light, open_light_of(tree), 1);
   EXPECT_GT(outcome.shaded_out, 0);
   EXPECT_GE(outcome.axes_killed, 1);
   EXPECT_FALSE(outcome.leader_shaded);
@@ -78,15 +82,15 @@ TEST(LightResponse, ThresholdIsD0PlusMinusDither) {
   species.death_threshold_dither = 0.1;
   // Light 0.39 is below every threshold in [0.4, 0.6); light 0.61 above all of them.
   ConiferTree dark = young_tree(species), bright = young_tree(species);
-  EXPECT_EQ(respond_to_light(dark, uniform_light(dark, 0.39, {0, 0, 1}), 1).bent, 0);
-  const auto lit = respond_to_light(bright, uniform_light(bright, 0.61, {0, 0, 1}), 1);
+  EXPECT_EQ(respond_to_light(dark, uniform_light(dark, 0.39, {0, 0, 1}), open_light_of(dark), 1).bent, 0);
+  const auto lit = respond_to_light(bright, uniform_light(bright, 0.61, {0, 0, 1}), open_light_of(bright), 1);
   EXPECT_EQ(lit.shaded_out, 0);
   EXPECT_GT(lit.bent, 0);
 }
 
 TEST(LightResponse, TreeWhoseFoliageIsAllShadedOutDies) {
   ConiferTree tree = young_tree();
-  const auto outcome = respond_to_light(tree, uniform_light(tree, 0.0, {0.0, 0.0, 1.0}), 1);
+  const auto outcome = respond_to_light(tree, uniform_light(tree, 0.0, {0.0, 0.0, 1.0}), open_light_of(tree), 1);
   EXPECT_TRUE(outcome.leader_shaded);
   EXPECT_TRUE(outcome.tree_died);
   EXPECT_FALSE(tree.has_living_branch_foliage());
@@ -95,7 +99,41 @@ TEST(LightResponse, TreeWhoseFoliageIsAllShadedOutDies) {
 TEST(LightResponse, RefusesLightForADifferentFoliage) {
   ConiferTree tree = young_tree();
   std::vector<LightSample> too_few(3);
-  EXPECT_THROW(respond_to_light(tree, too_few, 1), std::invalid_argument);
+  EXPECT_THROW(respond_to_light(tree, too_few, open_light_of(tree), 1), std::invalid_argument);
+}
+
+TEST(LightResponse, DeathActsOnLightRelativeToTheOpenGrownTree) {
+  SpeciesParameters species;
+  species.death_threshold = 0.5;
+  species.death_threshold_dither = 0.1;
+  // Stand light 0.2 is dark in absolute terms, but the same tree alone gets 0.25: the neighbours take only a
+  // fifth (relative 0.8 >= every threshold in [0.4, 0.6)). With open light 0.5 the relative light is 0.4 - 1e-9.
+  ConiferTree kept = young_tree(species), shaded = young_tree(species);
+  const auto k = respond_to_light(kept, uniform_light(kept, 0.2, {0, 0, 1}), uniform_light(kept, 0.25, {0, 0, 1}), 1);
+  EXPECT_EQ(k.shaded_out, 0);
+  const auto s = respond_to_light(shaded, uniform_light(shaded, 0.2 - 1e-9, {0, 0, 1}),
+                                  uniform_light(shaded, 0.5, {0, 0, 1}), 1);
+  EXPECT_EQ(s.bent, 0);
+  EXPECT_GT(s.shaded_out, 0);
+}
+
+TEST(LightResponse, OpenGrownLightIsSolvedForThisYearsShootsOnly) {
+  ConiferTree tree = young_tree();
+  LightParameters parameters;
+  parameters.sky_bands = 4;
+  parameters.sky_sectors = 8;
+  ReferenceLightSolver solver(parameters);
+  const auto light = open_grown_light(tree, solver);
+  const auto foliage = tree.foliage_shoot_indices();
+  ASSERT_EQ(light.size(), foliage.size());
+  const auto balls = tree.leaf_balls();
+  const auto all = solver.solve(balls);
+  for (std::size_t k = 0; k < foliage.size(); ++k) {
+    if (tree.shoots()[foliage[k]].year_formed == tree.age())
+      EXPECT_DOUBLE_EQ(light[k].light, all[k].light);
+    else
+      EXPECT_DOUBLE_EQ(light[k].light, 1.0);
+  }
 }
 
 }  // namespace
