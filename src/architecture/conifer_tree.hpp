@@ -59,6 +59,9 @@ class ConiferTree {
   int kill_shaded_shoots(const std::vector<int>& shoot_indices);
   // Whether any living branch shoot still carries foliage.
   bool has_living_branch_foliage() const;
+  // Years in a row the leader has been shaded out (stand/light_response.hpp keeps the count).
+  int leader_shaded_years() const { return leader_shaded_years_; }
+  void record_leader_light(bool shaded_out) { leader_shaded_years_ = shaded_out ? leader_shaded_years_ + 1 : 0; }
 
  private:
   double height_at(int age) const;
@@ -83,6 +86,7 @@ class ConiferTree {
   int tree_id_;
   int age_ = 0;
   int next_axis_id_ = 0;
+  int leader_shaded_years_ = 0;
   std::vector<Shoot> shoots_;
   std::vector<BranchAxis> axes_;  // axes_[0] is the stem
 };

@@ -80,6 +80,9 @@ struct SpeciesParameters {
   double heliotropism_strength = 0.4;    // I (Table 1)
   double death_threshold = 0.3;          // D0 on relative light (stand / open grown; calibrated, docs/model.md)
   double death_threshold_dither = 0.15;  // half of D0, as the seed's 0.3 around 0.6
+  // ours: a tree whose leader is shaded out (below its threshold) this many years in a row is overtopped and
+  // dies of light, even while lower branches, shaded by their own crown anyway, still pass the relative test.
+  int suppressed_years_to_death = 3;
 };
 
 }  // namespace heliostand

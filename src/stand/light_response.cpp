@@ -61,7 +61,9 @@ LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSa
   }
   outcome.shaded_out = static_cast<int>(shaded_out.size());
   outcome.axes_killed = tree.kill_shaded_shoots(shaded_out);
-  outcome.tree_died = outcome.leader_shaded && !tree.has_living_branch_foliage();
+  tree.record_leader_light(outcome.leader_shaded);
+  outcome.tree_died = (outcome.leader_shaded && !tree.has_living_branch_foliage()) ||
+                      tree.leader_shaded_years() >= species.suppressed_years_to_death;
   return outcome;
 }
 

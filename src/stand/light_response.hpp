@@ -9,8 +9,9 @@
 // (growth stop by order, eq. 12, calibrated to the surveyed crown base), and the stand solver's absolute light
 // in a conifer crown is dominated by the foliage around each ball (docs/model.md: 0.01-0.03 even for an open
 // tree), so the threshold acts on competition only: an open-grown tree keeps its crown.
-// The stem leader is not bent (the stem stays vertical, seed 001) but faces the threshold: a tree whose leader
-// is shaded out and whose branches carry no living foliage any more is dead (cause "light").
+// The stem leader is not bent (the stem stays vertical, seed 001) but faces the threshold. A tree dies of light
+// (cause "light") when its leader is shaded out and its branches carry no living foliage any more, or when its
+// leader has been shaded out `suppressed_years_to_death` years in a row (overtopped).
 #include <cstdint>
 #include <span>
 #include <vector>

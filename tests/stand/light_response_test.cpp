@@ -96,6 +96,28 @@ TEST(LightResponse, TreeWhoseFoliageIsAllShadedOutDies) {
   EXPECT_FALSE(tree.has_living_branch_foliage());
 }
 
+TEST(LightResponse, TreeWhoseLeaderStaysShadedOutDiesAfterTheSuppressedYears) {
+  SpeciesParameters species;
+  species.suppressed_years_to_death = 3;
+  ConiferTree tree = young_tree(species);
+  // Leader in the dark, every branch shoot in full light: the branches live, the leader's count runs.
+  auto leader_dark = [&] {
+    std::vector<LightSample> light;
+    for (int s : tree.foliage_shoot_indices()) light.push_back({tree.shoots()[s].order == 0 ? 0.0 : 1.0, {0, 0, 1}});
+    return light;
+  };
+  for (int year = 1; year <= 3; ++year) {
+    if (year > 1) tree.grow_year();
+    const auto outcome = respond_to_light(tree, leader_dark(), open_light_of(tree), 1);
+    EXPECT_TRUE(outcome.leader_shaded);
+    EXPECT_EQ(outcome.tree_died, year == 3) << year;
+  }
+  // A lit year resets the count.
+  tree.grow_year();
+  respond_to_light(tree, uniform_light(tree, 1.0, {0, 0, 1}), open_light_of(tree), 1);
+  EXPECT_EQ(tree.leader_shaded_years(), 0);
+}
+
 TEST(LightResponse, RefusesLightForADifferentFoliage) {
   ConiferTree tree = young_tree();
   std::vector<LightSample> too_few(3);
