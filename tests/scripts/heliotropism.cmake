@@ -9,7 +9,15 @@ add_test(NAME validation.heliotropism.findings
          COMMAND heliotropism_validation validate ${PROJECT_BINARY_DIR}/validation/heliotropism)
 set_tests_properties(validation.heliotropism.findings PROPERTIES TIMEOUT 600 LABELS "validation")
 
-add_test(NAME validation.heliotropism.table1_scenario
-         COMMAND heliotropism_validation run ${PROJECT_SOURCE_DIR}/stands/kanamaru-fig10e/scenario.toml
-                 ${PROJECT_BINARY_DIR}/validation/heliotropism/fig10e)
-set_tests_properties(validation.heliotropism.table1_scenario PROPERTIES TIMEOUT 600 LABELS "validation")
+# The runner end to end on a small scenario (the full Table 1 tree, stands/kanamaru-fig10e, takes minutes).
+add_test(NAME validation.heliotropism.run_scenario
+         COMMAND heliotropism_validation run ${PROJECT_SOURCE_DIR}/stands/kanamaru-ci/scenario.toml
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-ci)
+set_tests_properties(validation.heliotropism.run_scenario PROPERTIES TIMEOUT 300 LABELS "validation"
+                     PASS_REGULAR_EXPRESSION "12 generations, [1-9][0-9]* living tips")
+# Bad input: every bad key reported with file, line and key, exit status 2.
+add_test(NAME validation.heliotropism.bad_scenario
+         COMMAND heliotropism_validation run ${PROJECT_SOURCE_DIR}/stands/kanamaru-bad/scenario.toml
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-bad)
+set_tests_properties(validation.heliotropism.bad_scenario PROPERTIES
+  PASS_REGULAR_EXPRESSION "scenario.toml:3: key .model.kind.*trichotomy.*scenario.toml:4: key .model.heliotropism.*scenario.toml:5: key .model.leaf_radius.")
