@@ -40,12 +40,32 @@ std::size_t Stand::illuminate(LightSolver& solver) {
   return balls.size();
 }
 
+namespace {
+
+// Shoots killed by the response stop carrying foliage (they are flagged, not renumbered): drop their samples so
+// leaf_ball_light stays one per leaf_balls() entry for the outputs.
+void keep_light_of_surviving_foliage(StandTree& tree, const std::vector<int>& foliage_before) {
+  const std::vector<int> foliage_after = tree.tree.foliage_shoot_indices();
+  std::vector<LightSample> kept;
+  kept.reserve(foliage_after.size());
+  for (std::size_t k = 0, j = 0; k < foliage_before.size() && j < foliage_after.size(); ++k)
+    if (foliage_before[k] == foliage_after[j]) {
+      kept.push_back(tree.leaf_ball_light[k]);
+      ++j;
+    }
+  tree.leaf_ball_light = std::move(kept);
+}
+
+}  // namespace
+
 std::vector<TreeEvent> Stand::respond_to_light(LightSolver& solver, std::uint64_t seed) {
   std::vector<TreeEvent> deaths;
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
     const std::vector<LightSample> open = open_grown_light(tree.tree, solver);
+    const std::vector<int> foliage_before = tree.tree.foliage_shoot_indices();
     const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, open, seed);
+    keep_light_of_surviving_foliage(tree, foliage_before);
     if (!outcome.tree_died) continue;
     tree.status = TreeStatus::dead;
     tree.status_changed_at_age = stand_age_;

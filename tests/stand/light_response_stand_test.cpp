@@ -79,6 +79,9 @@ TEST(LightResponseStand, SuppressedTreeInADenseGroupDiesOfLightButNotInTheOpen) 
   Stand dense(0.01, 6, std::move(group), {});
   const auto deaths = grow_with_light(dense, 4);
   ASSERT_FALSE(deaths.empty());
+  // The light samples stay one per leaf ball after shoots died (the outputs pair them).
+  for (const StandTree& tree : dense.trees())
+    if (tree.alive()) EXPECT_EQ(tree.leaf_ball_light.size(), tree.tree.leaf_balls().size()) << tree.label;
   EXPECT_EQ(deaths.front().label, "4");  // the suppressed centre tree dies first
   EXPECT_EQ(deaths.front().kind, TreeEventKind::died);
   EXPECT_EQ(deaths.front().reason, "light");
