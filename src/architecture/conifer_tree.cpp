@@ -422,4 +422,28 @@ void ConiferTree::remove_shoot(int shoot_index) {
   remove_flagged(std::move(removed));
 }
 
+int ConiferTree::kill_shaded_shoots(const std::vector<int>& shoot_indices) {
+  std::vector<char> dying(axes_.size(), 0);
+  for (int s : shoot_indices) {
+    if (s < 0 || s >= static_cast<int>(shoots_.size()))
+      throw std::out_of_range("ConiferTree::kill_shaded_shoots: no shoot " + std::to_string(s));
+    if (shoots_[s].axis > 0) dying[shoots_[s].axis] = 1;
+  }
+  // Parents precede their laterals in the axis list: one forward pass carries death down every lateral.
+  int killed = 0;
+  for (std::size_t i = 1; i < axes_.size(); ++i) {
+    if (!dying[i] && !(axes_[i].parent_axis > 0 && dying[axes_[i].parent_axis])) continue;
+    dying[i] = 1;
+    if (!axes_[i].alive) continue;
+    kill_axis(static_cast<int>(i));
+    ++killed;
+  }
+  return killed;
+}
+
+bool ConiferTree::has_living_branch_foliage() const {
+  return std::any_of(shoots_.begin(), shoots_.end(),
+                     [&](const Shoot& shoot) { return shoot.order > 0 && carries_foliage(shoot); });
+}
+
 }  // namespace heliostand

@@ -54,6 +54,15 @@ class ConiferTree {
   void bend_shoot(int shoot_index, glm::dvec3 direction);
   // Remove a shoot with everything it carries (the rest of its axis and all laterals on them).
   void remove_shoot(int shoot_index);
+  // Seed 000's death rule on this year's shoots (stand/light_response.hpp): each listed branch shoot dies, and
+  // with it its axis and every lateral the axis carries; they persist as dead wood and fall by eq. 13.
+  // Stem shoots are ignored (the stem's fate is the tree's). Returns the number of axes killed.
+  int kill_shaded_shoots(const std::vector<int>& shoot_indices);
+  // Whether any living branch shoot still carries foliage.
+  bool has_living_branch_foliage() const;
+  // Years in a row the leader has been shaded out (stand/light_response.hpp keeps the count).
+  int leader_shaded_years() const { return leader_shaded_years_; }
+  void record_leader_light(bool shaded_out) { leader_shaded_years_ = shaded_out ? leader_shaded_years_ + 1 : 0; }
 
   // Crown–root coupling (seed 003's Branch_n, src/coupling/): bonus[n] is added to the flushing probability
   // (clamped to 0..1) of every lateral bud on a branch whose first-order axis leaves the trunk in path n
@@ -84,6 +93,7 @@ class ConiferTree {
   int tree_id_;
   int age_ = 0;
   int next_axis_id_ = 0;
+  int leader_shaded_years_ = 0;
   std::vector<Shoot> shoots_;
   std::vector<BranchAxis> axes_;  // axes_[0] is the stem
   std::array<double, 8> branching_bonus_{};  // crown–root coupling, by path

@@ -77,6 +77,17 @@ struct SpeciesParameters {
   // foliage unit), which keeps a stand's light field at branch level without a ball per twig: a calibrated
   // 35-year Todomatsu carries ~400 balls instead of ~5000 (the stand light solve is O(balls)).
   int foliage_max_order = 1;
+
+  // Light response (seed 000 on the seed-001 architecture; docs/model.md "Seed 000 in the conifer stand").
+  // Every new branch shoot turns toward its light vector by the fraction I and dies with its axis when its
+  // light is below its own threshold D = D0 + dither * U(-1, 1). Conifer defaults are calibrated for the stand's
+  // dense foliage (docs/model.md); seed 000's Table 1 values (D0 = 0.6, dither 0.3) would kill every shoot.
+  double heliotropism_strength = 0.4;    // I (Table 1)
+  double death_threshold = 0.3;          // D0 on relative light (stand / open grown; calibrated, docs/model.md)
+  double death_threshold_dither = 0.15;  // half of D0, as the seed's 0.3 around 0.6
+  // ours: a tree whose leader is shaded out (below its threshold) this many years in a row is overtopped and
+  // dies of light, even while lower branches, shaded by their own crown anyway, still pass the relative test.
+  int suppressed_years_to_death = 3;
 };
 
 }  // namespace heliostand

@@ -41,6 +41,7 @@ int run(int argc, char** argv) {
   int status = 0;
   add_check_command(app, status);
   add_grow_command(app, status);
+  add_kanamaru_command(app, status);
   add_devices_command(app);
   add_bench_command(app);
 

@@ -13,7 +13,7 @@ namespace {
 using S = SpeciesParameters;
 
 // Every SpeciesParameters field except `name` (which is the table's key), with its allowed range.
-const std::array<ParameterField<S>, 35> species_fields{{
+const std::array<ParameterField<S>, 39> species_fields{{
     {"site_asymptote_m", &S::site_asymptote_m, positive()},
     {"height_k", &S::height_k, positive()},
     {"height_m", &S::height_m, {0.0, 1.0, false, true}},  // p = 1/(1-m) needs m < 1
@@ -49,6 +49,10 @@ const std::array<ParameterField<S>, 35> species_fields{{
     {"lower_order_elongation_alpha", &S::lower_order_elongation_alpha, positive()},
     {"foliage_years", &S::foliage_years, between(1.0, 100.0)},
     {"foliage_max_order", &S::foliage_max_order, between(0.0, 10.0)},
+    {"heliotropism_strength", &S::heliotropism_strength, between(0.0, 1.0)},
+    {"death_threshold", &S::death_threshold, between(0.0, 1.0)},
+    {"death_threshold_dither", &S::death_threshold_dither, between(0.0, 1.0)},
+    {"suppressed_years_to_death", &S::suppressed_years_to_death, between(1.0, 1000.0)},
 }};
 
 std::span<const ParameterField<S>> fields() { return species_fields; }

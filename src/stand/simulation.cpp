@@ -99,7 +99,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
     const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
     spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
+    // Order matters: the crown-root coupling reads this year's light of every leaf ball, before the light
+    // response bends and kills shoots (which changes the leaf-ball list).
     if (roots) clock.time("roots", [&] { year > 0 ? roots->grow_year(stand) : roots->couple(stand); return 0; });
+    // The established trees grew without neighbours; competition acts from the first simulated year on.
+    if (year > 0)
+      output.record_events(clock.time("light response", [&] { return stand.respond_to_light(*solver, scenario.run.seed); }));
     const auto removals = stand.thin();
     output.record_events(removals);
     if (is_output_year(scenario, year))

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "stand/light_response.hpp"
+
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
@@ -36,6 +38,44 @@ std::size_t Stand::illuminate(LightSolver& solver) {
     trees_[i].leaf_ball_light.assign(samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i]),
                                      samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i + 1]));
   return balls.size();
+}
+
+namespace {
+
+// Shoots killed by the response stop carrying foliage (they are flagged, not renumbered): drop their samples so
+// leaf_ball_light stays one per leaf_balls() entry for the outputs.
+void keep_light_of_surviving_foliage(StandTree& tree, const std::vector<int>& foliage_before) {
+  const std::vector<int> foliage_after = tree.tree.foliage_shoot_indices();
+  std::vector<LightSample> kept;
+  kept.reserve(foliage_after.size());
+  for (std::size_t k = 0, j = 0; k < foliage_before.size() && j < foliage_after.size(); ++k)
+    if (foliage_before[k] == foliage_after[j]) {
+      kept.push_back(tree.leaf_ball_light[k]);
+      ++j;
+    }
+  tree.leaf_ball_light = std::move(kept);
+}
+
+}  // namespace
+
+std::vector<TreeEvent> Stand::respond_to_light(LightSolver& solver, std::uint64_t seed) {
+  std::vector<TreeEvent> deaths;
+  for (StandTree& tree : trees_) {
+    if (!tree.alive()) continue;
+    const std::vector<LightSample> open = open_grown_light(tree.tree, solver);
+    const std::vector<int> foliage_before = tree.tree.foliage_shoot_indices();
+    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, open, seed);
+    keep_light_of_surviving_foliage(tree, foliage_before);
+    if (!outcome.tree_died) continue;
+    tree.status = TreeStatus::dead;
+    tree.status_changed_at_age = stand_age_;
+    tree.status_reason = "light";
+    tree.leaf_ball_light.clear();
+    deaths.push_back({stand_age_, tree.id, tree.label, TreeEventKind::died, "light", tree.tree.dbh_cm(),
+                      tree.tree.height_m(), tree.tree.stem_volume_m3()});
+  }
+  if (!deaths.empty()) spdlog::info("age {}: {} trees died of light", stand_age_, deaths.size());
+  return deaths;
 }
 
 std::vector<TreeEvent> Stand::thin() {

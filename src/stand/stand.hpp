@@ -1,6 +1,7 @@
 #pragma once
 // The stand manager: every tree of the plantation, grown together one year at a time.
 // One simulated year (DESIGN.md): grow → light → (respond) → thin → metrics; data flows one way.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ class Stand {
   // The light field of the whole stand: every living tree's leaf balls shade every other's.
   // Returns the number of leaf balls lit.
   std::size_t illuminate(LightSolver& solver);
+  // Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their light
+  // vector or die of shade; trees left without foliage die (cause "light"). Call after illuminate(); `solver`
+  // also lights each tree alone (the open-grown reference). Returns the deaths.
+  std::vector<TreeEvent> respond_to_light(LightSolver& solver, std::uint64_t seed);
   // Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 

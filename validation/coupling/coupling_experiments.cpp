@@ -36,6 +36,9 @@ CoupledResult run_coupled(const CoupledExperiment& e) {
   std::vector<StandTree> trees;
   SpeciesParameters species;
   species.foliage_years = 3;  // a lighter crown (Todomatsu keeps 5): the O(balls²) light solve stays fast
+  // A leaf ball on every shoot, as in seed 003's single-tree experiments: Branch_n acts on the laterals, and
+  // only with their own balls does more or less lateral foliage show in LP_n and in the measured crown.
+  species.foliage_max_order = 3;
   trees.push_back(StandTree{0, "1", "todomatsu", ConiferTree(species, TreeCalibration{}, {5.0, 5.0, 0.0}, e.seed, 0)});
   Stand stand(plot.area_ha(), 0, std::move(trees), {});
 

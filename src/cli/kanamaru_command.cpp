@@ -1,0 +1,27 @@
+// heliostand kanamaru SCENARIO --out DIR: one seed-000 experiment (stands/kanamaru-*), the simple dichotomy model
+// or a bud start grown with heliotropism and death by light (registered in cli/app.cpp).
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include "architecture/kanamaru_scenario.hpp"
+#include "cli/commands.hpp"
+
+namespace heliostand::cli {
+
+void add_kanamaru_command(CLI::App& app, int& status) {
+  auto* command = app.add_subcommand("kanamaru", "Grow a seed-000 (Kanamaru et al. 1991) dichotomy or bud-start experiment");
+  auto scenario = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  command->add_option("scenario", *scenario, "Scenario TOML file with a [model] table")->required();
+  command->add_option("-o,--out", *out, "Output folder")->required();
+  command->callback([scenario, out, &status] {
+    status = report_errors([&] {
+      const KanamaruRunSummary summary = run_kanamaru(load_kanamaru_scenario(*scenario), *out);
+      spdlog::info("{} generations: {} living tips, {} living branches; {:.1f} s -> {}", summary.generations,
+                   summary.tips, summary.living_branches, summary.seconds, *out);
+      return 0;
+    });
+  });
+}
+
+}  // namespace heliostand::cli
