@@ -1,7 +1,9 @@
 #!/bin/sh
 # Render a heliostand output series to PNGs with ParaView, headless, then check the images.
 #
-#   validation/paraview/render.sh STAND_PVD OUT_DIR
+#   validation/paraview/render.sh STAND_PVD OUT_DIR [AGE ...]
+#
+# Renders the first and last output year, or the listed stand ages.
 #
 # Needs the Debian packages `paraview xvfb xauth` (install paraview with --no-install-recommends:
 # its recommended python3-paraview conflicts with libvtk9-dev, which the build needs). pvbatch's
@@ -13,12 +15,13 @@
 # 77 ParaView not available here (CTest reports the test as skipped).
 set -eu
 
-if [ $# -ne 2 ]; then
-  echo "usage: $0 STAND_PVD OUT_DIR" >&2
+if [ $# -lt 2 ]; then
+  echo "usage: $0 STAND_PVD OUT_DIR [AGE ...]" >&2
   exit 2
 fi
 pvd=$1
 out_dir=$2
+shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 
 skip() {
@@ -63,7 +66,7 @@ fi
 
 mkdir -p "$out_dir"
 PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
-  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$here/render_stand.py" "$pvd" "$out_dir" > "$out_dir/render.log" 2>&1 || {
+  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$here/render_stand.py" "$pvd" "$out_dir" "$@" > "$out_dir/render.log" 2>&1 || {
   cat "$out_dir/render.log" >&2
   echo "error: pvbatch failed (log above, also in $out_dir/render.log)" >&2
   exit 1

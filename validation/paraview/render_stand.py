@@ -1,12 +1,13 @@
 """Render a heliostand output series with ParaView (run with pvbatch; see render.sh).
 
-    pvbatch render_stand.py STAND_PVD OUT_DIR
+    pvbatch render_stand.py STAND_PVD OUT_DIR [AGE ...]
 
 Branches become tubes whose radius is the wood radius written as point data (Tube filter,
 "Vary Radius: By Absolute Scalar"); leaf balls become spheres of their own radius coloured by
 their relative light. Roots (a `roots` block, written when the scenario has roots on) become tubes of
 their own radius below a half-transparent ground. One PNG for the first and one for the last time step, both framed on the
-stand as it is at the last time step so the two images compare directly.
+stand as it is at the last time step so the two images compare directly. Given AGEs (stand ages), one PNG
+per listed age instead (e.g. the years before and after a thinning).
 """
 import os
 import sys
@@ -136,10 +137,15 @@ def frame_stand(view, bounds):
 
 
 def main(argv):
-    if len(argv) != 3:
-        sys.stderr.write("usage: pvbatch render_stand.py STAND_PVD OUT_DIR\n")
+    if len(argv) < 3:
+        sys.stderr.write("usage: pvbatch render_stand.py STAND_PVD OUT_DIR [AGE ...]\n")
         return 2
     pvd, out_dir = argv[1], argv[2]
+    try:
+        ages = [float(age) for age in argv[3:]]
+    except ValueError:
+        sys.stderr.write("error: ages must be numbers: %s\n" % " ".join(argv[3:]))
+        return 2
     if not os.path.isfile(pvd):
         sys.stderr.write("error: %s: no such file\n" % pvd)
         return 2
@@ -169,8 +175,13 @@ def main(argv):
     show_ground(bounds, view, opacity=0.35 if roots else 1.0, surface_z=0.0 if roots else None)
     frame_stand(view, bounds)
 
+    missing = [age for age in ages if not any(abs(age - t) < 1e-6 for t in times)]
+    if missing:
+        sys.stderr.write("error: no output year at stand age %s (have %s)\n" %
+                         (", ".join("%g" % a for a in missing), ", ".join("%g" % t for t in times)))
+        return 2
     written = []
-    for t in sorted({times[0], times[-1]}):
+    for t in sorted(set(ages) if ages else {times[0], times[-1]}):
         view.ViewTime = t
         Render(view)
         name = os.path.join(out_dir, "stand_age_%04d.png" % int(round(t)))
