@@ -31,6 +31,15 @@ DeviceChoice DeviceChoice::parse(const std::string& text) {
   throw std::invalid_argument("device '" + text + "': expected auto, reference, opencl or opencl:N (N >= 0)");
 }
 
+std::string DeviceChoice::text() const {
+  switch (kind) {
+    case Kind::automatic: return "auto";
+    case Kind::reference: return "reference";
+    case Kind::opencl: return opencl_index ? "opencl:" + std::to_string(*opencl_index) : "opencl";
+  }
+  return "auto";
+}
+
 #ifndef HELIOSTAND_HAVE_OPENCL
 std::vector<OpenCLDeviceInfo> list_opencl_devices() { return {}; }
 #endif

@@ -17,6 +17,8 @@ struct DeviceChoice {
 
   // Throws std::invalid_argument ("device 'x': expected auto, reference, opencl or opencl:N").
   static DeviceChoice parse(const std::string& text);
+  std::string text() const;  // back to "auto", "reference", "opencl", "opencl:N"
+  bool operator==(const DeviceChoice&) const = default;
 };
 
 struct OpenCLDeviceInfo {

@@ -1,3 +1,5 @@
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "scenario/scenario_tables.hpp"
@@ -22,9 +24,9 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
   if (auto seed = reader.integer("seed", non_negative())) run.seed = static_cast<std::uint64_t>(*seed);
   if (auto interval = reader.integer("output_interval", at_least(1))) run.output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {
-    if (auto choice = parse_device_choice(*device)) {
-      run.device = *choice;
-    } else {
+    try {
+      run.device = compute::DeviceChoice::parse(*device);
+    } catch (const std::invalid_argument&) {
       reader.problem("device", fmt::format("expected \"auto\", \"reference\", \"opencl\" or \"opencl:N\", got \"{}\"",
                                            *device));
     }

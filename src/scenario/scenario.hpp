@@ -9,7 +9,7 @@
 
 #include "architecture/species.hpp"
 #include "light/light_parameters.hpp"
-#include "scenario/device_choice.hpp"
+#include "compute/device_choice.hpp"
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
 #include "survey/plot_bounds.hpp"
@@ -28,7 +28,7 @@ struct RunSettings {
   int years = 0;                      // years to simulate after the survey
   std::uint64_t seed = 1;
   int output_interval_years = 1;      // write the stand every this many years (and at the start and end)
-  DeviceChoice device;
+  compute::DeviceChoice device;
 };
 
 struct Scenario {

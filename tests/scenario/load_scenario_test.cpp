@@ -6,6 +6,7 @@
 #include "scenario/scenario_test_files.hpp"
 
 namespace heliostand {
+using compute::DeviceChoice;
 namespace {
 
 using testing::minimal_stand;
@@ -167,14 +168,15 @@ TEST(ExampleStands, TinyLoads) {
   EXPECT_THAT(s.thinning[0].ids, ::testing::ElementsAre("4"));
 }
 
-TEST(DeviceChoice, ParsesEveryForm) {
-  EXPECT_EQ(parse_device_choice("auto"), DeviceChoice{});
-  EXPECT_EQ(parse_device_choice("reference")->kind, DeviceChoice::Kind::reference);
-  EXPECT_EQ(parse_device_choice("opencl"), (DeviceChoice{DeviceChoice::Kind::opencl, std::nullopt}));
-  EXPECT_EQ(parse_device_choice("opencl:0"), (DeviceChoice{DeviceChoice::Kind::opencl, 0}));
-  EXPECT_EQ(parse_device_choice("opencl:12")->text(), "opencl:12");
-  for (const char* bad : {"", "gpu", "opencl:", "opencl:-1", "opencl:1x", "OpenCL", "opencl: 1"}) {
-    EXPECT_FALSE(parse_device_choice(bad)) << bad;
+TEST(DeviceChoice, ParsesEveryFormAndPrintsItBack) {
+  EXPECT_EQ(DeviceChoice::parse("auto"), DeviceChoice{});
+  EXPECT_EQ(DeviceChoice::parse("reference").kind, DeviceChoice::Kind::reference);
+  EXPECT_EQ(DeviceChoice::parse("opencl"), (DeviceChoice{DeviceChoice::Kind::opencl, std::nullopt}));
+  EXPECT_EQ(DeviceChoice::parse("opencl:0"), (DeviceChoice{DeviceChoice::Kind::opencl, 0}));
+  for (const char* text : {"auto", "reference", "opencl", "opencl:12"})
+    EXPECT_EQ(DeviceChoice::parse(text).text(), text);
+  for (const char* bad : {"gpu", "opencl:", "opencl:-1", "opencl:1x", "OpenCL", "opencl: 1"}) {
+    EXPECT_THROW(DeviceChoice::parse(bad), std::invalid_argument) << bad;
   }
 }
 
