@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "compute/device_choice.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/simulation.hpp"
 
@@ -54,8 +55,15 @@ void add_grow_command(CLI::App& app, int& status) {
   command->add_option("--seed", arguments->seed, "Random seed (overrides run.seed)");
   command->add_option("--years", arguments->years, "Years to simulate (overrides run.years)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--device", arguments->device,
-                      "auto | reference | opencl | opencl:N (overrides run.device)");
+  command->add_option("--device", arguments->device, "auto | reference | opencl | opencl:N (overrides run.device)")
+      ->check([](const std::string& text) {
+        try {
+          compute::DeviceChoice::parse(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      });
   command->add_flag("--no-vtk", arguments->no_vtk, "Write the tables only (batch forecasts)");
   command->callback([arguments, &status] {
     arguments->command_line = invoked_command_line();

@@ -75,11 +75,11 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const auto started = std::chrono::steady_clock::now();
   RunManifest manifest;
   manifest.started_utc = utc_now_iso8601();
-  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
-
+  // The solver first: a device that does not exist must fail before the output folder is taken.
   const std::string device = options.device.empty() ? scenario.run.device.text() : options.device;
   auto solver = make_light_solver(device, light_for(scenario));
   spdlog::info("light solver: {}", solver->name());
+  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
 
   StageClock clock;
   EstablishmentReport report;

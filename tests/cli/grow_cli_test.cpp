@@ -201,6 +201,17 @@ TEST(GrowCli, BadSurveyIsRejectedBeforeAnyOutput) {
   EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
 }
 
+TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
+  const auto folder = scratch_folder("tiny_bad_device");
+  const auto malformed = run_cli("grow " + tiny + " --out " + folder.string() + " --device gpu");
+  EXPECT_EQ(malformed.status, 2) << malformed.output;
+  EXPECT_NE(malformed.output.find("device 'gpu'"), std::string::npos) << malformed.output;
+  const auto missing = run_cli("grow " + tiny + " --out " + folder.string() + " --device opencl:99");
+  EXPECT_NE(missing.status, 0) << missing.output;
+  EXPECT_NE(missing.output.find("99"), std::string::npos) << missing.output;
+  EXPECT_FALSE(fs::exists(folder)) << "no output for a device that does not exist";
+}
+
 TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
   const auto folder = scratch_folder("tiny_too_short");
   const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --years 2");
