@@ -79,6 +79,13 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const std::string device = options.device.empty() ? scenario.run.device.text() : options.device;
   auto solver = make_light_solver(device, light_for(scenario));
   spdlog::info("light solver: {}", solver->name());
+  // The open-grown reference of the light response (each tree alone, once a year): a few hundred balls, so
+  // the exact solver is cheapest (culling and far field only pay off for a whole stand), and a tree alone is
+  // not repeated across periodic plot edges.
+  LightParameters open_grown = light_for(scenario);
+  open_grown.exact = true;
+  open_grown.periodic = false;
+  auto open_grown_solver = make_light_solver(device, open_grown);
   StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
 
   StageClock clock;
@@ -104,7 +111,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     if (roots) clock.time("roots", [&] { year > 0 ? roots->grow_year(stand) : roots->couple(stand); return 0; });
     // The established trees grew without neighbours; competition acts from the first simulated year on.
     if (year > 0)
-      output.record_events(clock.time("light response", [&] { return stand.respond_to_light(*solver, scenario.run.seed); }));
+      output.record_events(clock.time("light response", [&] { return stand.respond_to_light(*open_grown_solver, scenario.run.seed); }));
     const auto removals = stand.thin();
     output.record_events(removals);
     if (is_output_year(scenario, year))

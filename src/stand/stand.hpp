@@ -37,7 +37,8 @@ class Stand {
   // Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their light
   // vector or die of shade; trees left without foliage die (cause "light"). Call after illuminate(); `solver`
   // also lights each tree alone (the open-grown reference). Returns the deaths.
-  std::vector<TreeEvent> respond_to_light(LightSolver& solver, std::uint64_t seed);
+  // `open_grown_solver` lights each tree alone (the reference its relative light is measured against).
+  std::vector<TreeEvent> respond_to_light(LightSolver& open_grown_solver, std::uint64_t seed);
   // Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
