@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "read_text.hpp"
+
 namespace heliostand::testing {
 
 struct CliResult {
@@ -35,13 +37,6 @@ inline std::filesystem::path scratch_folder(const std::string& name) {
   std::filesystem::remove_all(path);
   std::filesystem::create_directories(path.parent_path());
   return path;
-}
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace heliostand::testing

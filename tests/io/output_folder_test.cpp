@@ -6,17 +6,13 @@
 #include <sstream>
 
 #include "io/temp_folder.hpp"
+#include "read_text.hpp"
 
 namespace heliostand {
 namespace {
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::read_text;
 
 TEST(OutputFolder, CreatesAMissingFolderWithParents) {
   testing::TempFolder tmp("output_folder_create");

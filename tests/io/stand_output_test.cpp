@@ -10,17 +10,13 @@
 #include "io/csv_test_reader.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
+#include "read_text.hpp"
 
 namespace heliostand {
 namespace {
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::read_text;
 
 bool has_temporaries(const fs::path& root) {
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
