@@ -3,16 +3,8 @@
 #
 #   validation/paraview/render.sh STAND_PVD OUT_DIR [AGE ...]
 #
-# Renders the first and last output year, or the listed stand ages.
-#
-# Needs the Debian packages `paraview xvfb xauth` (install paraview with --no-install-recommends:
-# its recommended python3-paraview conflicts with libvtk9-dev, which the build needs). pvbatch's
-# Python modules come from python3-paraview, which this script therefore fetches with
-# `apt-get download` (same version as the installed paraview) and unpacks with `dpkg -x` into a
-# private folder, once: $HELIOSTAND_PARAVIEW_PYTHON, default ~/.cache/heliostand/python3-paraview-VERSION.
-#
-# Exit status: 0 rendered and checked, 1 rendering or check failed, 2 usage,
-# 77 ParaView not available here (CTest reports the test as skipped).
+# Renders the first and last output year, or the listed stand ages (render_stand.py). pvbatch, xvfb
+# and the exit statuses: run_pvbatch.sh (0 rendered and checked, 1 failed, 2 usage, 77 no ParaView).
 set -eu
 
 if [ $# -lt 2 ]; then
@@ -23,55 +15,5 @@ pvd=$1
 out_dir=$2
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
-
-skip() {
-  # In CI (CI=true) a missing ParaView is a broken set-up, not a reason to skip.
-  if [ "${CI:-}" = true ]; then
-    echo "error: $* (CI=true: rendering is required)" >&2
-    exit 1
-  fi
-  echo "skipped: $*" >&2
-  exit 77
-}
-
 [ -f "$pvd" ] || { echo "error: $pvd: no such file" >&2; exit 2; }
-pvbatch=$(command -v "${HELIOSTAND_PVBATCH:-pvbatch}") ||
-  skip "pvbatch not found (apt-get install --no-install-recommends paraview xvfb xauth)"
-# Resolve symlinks (/bin -> /usr/bin): pvbatch derives its Python path from its own location, and from
-# /bin it would pick up python3-vtk9's vtkmodules instead of ParaView's and crash.
-pvbatch=$(readlink -f "$pvbatch")
-command -v xvfb-run >/dev/null 2>&1 || skip "xvfb-run not found (apt-get install xvfb xauth)"
-command -v xauth >/dev/null 2>&1 || skip "xauth not found (apt-get install xauth)"
-
-# pvbatch's Python side: the system one if python3-paraview happens to be installed, else a private copy.
-if [ -f /usr/lib/python3/dist-packages/paraview/simple.py ]; then
-  paraview_python=/usr/lib/python3/dist-packages
-else
-  version=$(dpkg-query -W -f='${Version}' paraview 2>/dev/null) || skip "the paraview package is not installed"
-  cache=${XDG_CACHE_HOME:-$HOME/.cache}/heliostand
-  private=${HELIOSTAND_PARAVIEW_PYTHON:-$cache/python3-paraview-$version}
-  if [ ! -f "$private/usr/lib/python3/dist-packages/paraview/simple.py" ]; then
-    echo "setting up pvbatch's Python modules (python3-paraview $version) in $private" >&2
-    work=$(mktemp -d)
-    trap 'rm -rf "$work"' EXIT
-    (cd "$work" && apt-get download -q "python3-paraview=$version" >&2) ||
-      skip "apt-get download python3-paraview=$version failed (no network or apt source?)"
-    dpkg -x "$work"/python3-paraview_*.deb "$work/root"
-    mkdir -p "$(dirname "$private")"
-    rm -rf "$private"
-    mv "$work/root" "$private"  # only a complete folder ever appears under the final name
-  fi
-  paraview_python=$private/usr/lib/python3/dist-packages
-fi
-
-mkdir -p "$out_dir"
-PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
-  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$here/render_stand.py" "$pvd" "$out_dir" "$@" > "$out_dir/render.log" 2>&1 || {
-  cat "$out_dir/render.log" >&2
-  echo "error: pvbatch failed (log above, also in $out_dir/render.log)" >&2
-  exit 1
-}
-images=$(grep '\.png$' "$out_dir/render.log" || true)
-[ -n "$images" ] || { cat "$out_dir/render.log" >&2; echo "error: pvbatch wrote no image" >&2; exit 1; }
-# shellcheck disable=SC2086  # one image path per word; the paths are ours and have no spaces
-python3 "$here/check_png.py" $images
+exec sh "$here/run_pvbatch.sh" "$here/render_stand.py" "$out_dir" "$pvd" "$out_dir" "$@"
