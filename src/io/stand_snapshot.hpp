@@ -6,6 +6,7 @@
 // TreeSnapshot for per-tree geometry, a field on StandSnapshot for stand-wide grids — and registers a
 // block builder (io/vtk_stand_blocks.hpp) that turns it into one named block of the yearly multiblock.
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "architecture/shoot.hpp"
+#include "hollow/hollow_mesh.hpp"
 #include "io/tree_status.hpp"
 
 namespace heliostand {
@@ -39,6 +41,12 @@ struct TreeSnapshot {
   std::span<const Shoot> shoots;
   std::vector<LeafBall> leaf_balls;
   std::vector<double> leaf_ball_light;  // one per leaf ball (same order), relative light 0..1; may be empty
+
+  // Hollows (docs/hollows.md): how many the tree carries (> 0: a habitat tree), and its stem as a surface in
+  // the tree frame (stem base at the origin), hollows included. Null when trunks are not meshed (a removed
+  // tree, a tree without a stem) — the trunk block then has nothing for it.
+  int hollow_count = 0;
+  std::shared_ptr<const hollow::HollowMesh> trunk;
 };
 
 struct StandSnapshot {

@@ -36,7 +36,7 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
 }
 
 void write_trees_header(CsvWriter& csv) {
-  csv.header({"stand_age", "tree_id", "label", "x_m", "y_m", "status", "age", "height_m", "dbh_cm", "crown_base_m",
+  csv.header({"stand_age", "tree_id", "label", "x_m", "y_m", "status", "habitat_tree", "hollows", "age", "height_m", "dbh_cm", "crown_base_m",
               "crown_radius_m", "volume_m3", "leaf_balls", "mean_light",
               "root_length_m", "root_max_depth_m", "root_uptake"});
 }
@@ -49,6 +49,8 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .number(tree.position.x, kMetres)
         .number(tree.position.y, kMetres)
         .text(to_string(tree.status))
+        .integer(tree.hollow_count > 0 ? 1 : 0)
+        .integer(tree.hollow_count)
         .number(tree.age_years, kYears)
         .number(tree.height_m, kMetres)
         .number(tree.dbh_cm, kCentimetres)

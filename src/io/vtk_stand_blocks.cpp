@@ -129,6 +129,8 @@ vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot) {
   points->Allocate(tree_count);
   auto tree_id = named_array<vtkIntArray>("tree_id", tree_count);
   auto status = named_array<vtkIntArray>("status", tree_count);
+  auto hollow_count = named_array<vtkIntArray>("hollow_count", tree_count);
+  auto habitat_tree = named_array<vtkIntArray>("habitat_tree", tree_count);
   auto label = vtkSmartPointer<vtkStringArray>::New();
   label->SetName("label");
   struct Measure {
@@ -148,6 +150,8 @@ vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot) {
     add_point(*points, tree.position);
     tree_id->InsertNextValue(tree.id);
     status->InsertNextValue(status_code(tree.status));
+    hollow_count->InsertNextValue(tree.hollow_count);
+    habitat_tree->InsertNextValue(tree.hollow_count > 0 ? 1 : 0);
     label->InsertNextValue(tree.label);
     for (std::size_t m = 0; m < std::size(measures); ++m) measure_arrays[m]->InsertNextValue(tree.*(measures[m].field));
   }
@@ -158,7 +162,52 @@ vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot) {
   block->GetPointData()->AddArray(tree_id);
   block->GetPointData()->AddArray(label);
   block->GetPointData()->AddArray(status);
+  block->GetPointData()->AddArray(hollow_count);
+  block->GetPointData()->AddArray(habitat_tree);
   for (const auto& array : measure_arrays) block->GetPointData()->AddArray(array);
+  return block;
+}
+
+vtkSmartPointer<vtkPolyData> build_trunk_block(const StandSnapshot& snapshot) {
+  vtkIdType vertex_count = 0, triangle_count = 0;
+  for (const TreeSnapshot& tree : snapshot.trees)
+    if (tree.trunk) {
+      vertex_count += static_cast<vtkIdType>(tree.trunk->vertices.size());
+      triangle_count += static_cast<vtkIdType>(tree.trunk->triangles.size());
+    }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->Allocate(vertex_count);
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  triangles->AllocateEstimate(triangle_count, 3);
+  auto tree_id = named_array<vtkIntArray>("tree_id", vertex_count);
+  auto part = named_array<vtkIntArray>("part", vertex_count);
+  auto callus = named_array<vtkDoubleArray>("callus_thickness_m", vertex_count);
+  auto shift = named_array<vtkDoubleArray>("bark_shift_m", vertex_count);
+  auto lift = named_array<vtkDoubleArray>("bark_lift_m", vertex_count);
+
+  for (const TreeSnapshot& tree : snapshot.trees) {
+    if (!tree.trunk) continue;
+    const hollow::HollowMesh& mesh = *tree.trunk;
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      add_point(*points, tree.position + mesh.vertices[v]);
+      tree_id->InsertNextValue(tree.id);
+      part->InsertNextValue(mesh.part[v]);
+      callus->InsertNextValue(mesh.callus_thickness_m[v]);
+      shift->InsertNextValue(mesh.bark_shift_m[v]);
+      lift->InsertNextValue(mesh.bark_lift_m[v]);
+    }
+    for (const auto& t : mesh.triangles) {
+      const vtkIdType ids[3] = {first + t[0], first + t[1], first + t[2]};
+      triangles->InsertNextCell(3, ids);
+    }
+  }
+  auto block = vtkSmartPointer<vtkPolyData>::New();
+  block->SetPoints(points);
+  block->SetPolys(triangles);
+  for (auto array : {tree_id, part}) block->GetPointData()->AddArray(array);
+  for (auto array : {callus, shift, lift}) block->GetPointData()->AddArray(array);
   return block;
 }
 
@@ -167,6 +216,7 @@ std::vector<StandBlock> default_stand_blocks() {
       {"branches", [](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build_branches_block(s); }},
       {"leaf_balls", [](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build_leaf_balls_block(s); }},
       {"trees", [](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build_trees_block(s); }},
+      {"trunk", [](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build_trunk_block(s); }},
   };
 }
 

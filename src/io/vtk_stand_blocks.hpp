@@ -31,10 +31,14 @@ vtkSmartPointer<vtkPolyData> build_branches_block(const StandSnapshot& snapshot)
 vtkSmartPointer<vtkPolyData> build_leaf_balls_block(const StandSnapshot& snapshot);
 
 // One vertex per tree at its stem base. Point data: tree_id, label (survey id), status (TreeStatus code),
-// age_years, height_m, dbh_cm, crown_base_m, crown_radius_m, volume_m3, mean_light.
+// hollow_count, habitat_tree (1 when it carries a hollow), age_years, height_m, dbh_cm, crown_base_m, crown_radius_m, volume_m3, mean_light.
 vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot);
 
-// branches, leaf_balls, trees — in that order.
+// Every standing tree's stem surface (TreeSnapshot::trunk) in stand coordinates, as triangles. Point data:
+// tree_id, part (0 stem, 1 bark around a hollow, 2 callus roll), callus_thickness_m, bark_shift_m, bark_lift_m.
+vtkSmartPointer<vtkPolyData> build_trunk_block(const StandSnapshot& snapshot);
+
+// branches, leaf_balls, trees, trunk — in that order.
 std::vector<StandBlock> default_stand_blocks();
 
 // The multiblock of one output year: one block per builder, each block and the multiblock itself

@@ -15,7 +15,7 @@ namespace heliostand {
 namespace scenario_detail {
 
 std::span<const TableParserEntry> scenario_table_parsers() {
-  static constexpr std::array<TableParserEntry, 9> parsers{{
+  static constexpr std::array<TableParserEntry, 10> parsers{{
       {"stand", parse_stand},
       {"run", parse_run},
       {"species", parse_species},
@@ -25,6 +25,7 @@ std::span<const TableParserEntry> scenario_table_parsers() {
       {"soil", parse_soil},
       {"coupling", parse_coupling},
       {"root_pruning", parse_root_pruning},
+      {"hollow", parse_hollow},
   }};
   return parsers;
 }
@@ -95,6 +96,7 @@ Scenario load_scenario(const std::filesystem::path& file) {
   for (const auto& entry : scenario_table_parsers()) entry.parse(root.get(entry.key), draft, problems);
 
   read_stand_survey(draft, problems);
+  if (draft.survey_label) attach_hollows_to_survey(draft, problems);
   if (draft.survey_label && draft.plot_valid) {
     check_thinning_against_survey(draft, problems);
   }

@@ -80,6 +80,7 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
   const bool has_basal_area = reader.table().contains("target_basal_area_m2_per_ha");
   keys.target_line = reader.line_of(has_stems ? "target_stems_per_ha" : "target_basal_area_m2_per_ha");
   if (auto reason = reader.string("reason")) event.reason = *reason;
+  if (auto protect = reader.boolean("protect_habitat_trees")) event.protect_habitat_trees = *protect;
   reader.report_unknown_keys();
 
   if (method == ThinningMethod::ids) {
@@ -128,8 +129,11 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return events[a].age_years < events[b].age_years; });
 
   const Survey& survey = draft.scenario.survey;
-  std::set<std::string> surveyed;
-  for (const auto& tree : survey.trees) surveyed.insert(tree.id);
+  std::set<std::string> surveyed, habitat;
+  for (const auto& tree : survey.trees) {
+    surveyed.insert(tree.id);
+    if (!tree.hollows.empty()) habitat.insert(tree.id);
+  }
   std::map<std::string, std::string> removed_by;  // id -> key path of the event removing it
   const double area_ha = draft.scenario.plot_area_ha();
   // The most stems/ha the stand can have at each event: no event adds trees, so the survey density,
@@ -143,6 +147,12 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
       for (const auto& id : event.ids) {
         if (!surveyed.count(id)) {
           problems.add(keys.ids_line, keys.path + ".ids", fmt::format("tree id \"{}\" is not in the survey", id));
+        } else if (event.protect_habitat_trees && habitat.count(id)) {
+          // Naming a protected tree would silently do nothing: say so, and how to remove it on purpose.
+          problems.add(keys.ids_line, keys.path + ".ids",
+                       fmt::format("tree id \"{}\" carries a hollow (a habitat tree, protected from thinning); set "
+                                   "protect_habitat_trees = false in this thinning to remove it",
+                                   id));
         } else if (auto [it, fresh] = removed_by.emplace(id, keys.path); !fresh) {
           problems.add(keys.ids_line, keys.path + ".ids",
                        fmt::format("tree id \"{}\" is already removed by {}", id, it->second));

@@ -13,6 +13,7 @@
 #include "light/light_parameters.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/scenario_problems.hpp"
+#include "survey/check_hollows.hpp"
 
 namespace heliostand::scenario_detail {
 
@@ -35,6 +36,13 @@ struct ScenarioDraft {
     int target_line = 0;
   };
   std::vector<ThinningKeys> thinning_keys;
+  // [[hollow]] entries, attached to their survey records once the survey is read.
+  struct ScenarioHollow {
+    std::string tree_id;
+    int tree_line = 0;
+    TreeHollow hollow;
+  };
+  std::vector<ScenarioHollow> hollows;
 };
 
 using TableParser = void (*)(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
@@ -55,6 +63,11 @@ void parse_roots(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
 void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_coupling(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_root_pruning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_hollow(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+
+// After the survey is read: each [[hollow]] joins its tree's record (unknown ids are problems) and is
+// checked against that tree's trunk (survey/check_hollows.hpp).
+void attach_hollows_to_survey(ScenarioDraft& draft, ScenarioProblems& problems);
 
 // After the survey is read: thinning ids exist and are removed once; stem targets fall over time. Then
 // sorts the events by age.

@@ -19,6 +19,7 @@ struct ThinningEvent {
   std::optional<double> target_stems_per_ha;         // from_below / from_above: exactly one target
   std::optional<double> target_basal_area_m2_per_ha;
   std::string reason = "thinning";                   // label carried into the removal outputs
+  bool protect_habitat_trees = true;                 // trees with hollows are never removed by this event
   int line = 0;                                      // scenario line of the [[thinning]] header
 };
 

@@ -5,6 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "rng/random_stream.hpp"
 #include "stand/calibration.hpp"
 #include "stand/parallel_for.hpp"
 
@@ -19,6 +20,20 @@ SurveyTarget target_of(const SurveyRecord& record) {
   if (!record.imputed.crown_radius) target.crown_radius_m = record.crown_radius_m;
   if (!record.imputed.crown_base) target.crown_base_m = record.crown_base_m;
   return target;
+}
+
+// The record's hollows with their random streams fixed: a hollow without its own seed draws from one derived
+// from the run seed, the tree and the hollow's place on the tree, so it looks the same in every output year.
+std::vector<hollow::HollowSpec> hollows_of(const SurveyRecord& record, std::uint64_t run_seed, int tree_id) {
+  constexpr std::uint64_t hollow_tag = 0x484F4C4C;  // "HOLL"
+  std::vector<hollow::HollowSpec> hollows;
+  for (std::size_t k = 0; k < record.hollows.size(); ++k) {
+    hollow::HollowSpec spec = record.hollows[k].spec;
+    if (!record.hollows[k].seed_given)
+      spec.seed = RandomStream(run_seed, {hollow_tag, static_cast<std::uint64_t>(tree_id), k}).next_u64();
+    hollows.push_back(spec);
+  }
+  return hollows;
 }
 
 }  // namespace
@@ -36,6 +51,7 @@ std::vector<StandTree> establish_stand(const Scenario& scenario, EstablishmentRe
     ConiferTree tree = grow_calibrated_tree(species, fits[i].calibration, target_of(record).age_years,
                                             {record.x_m, record.y_m, 0.0}, scenario.run.seed, id);
     grown[i].emplace(StandTree{id, record.id, record.species, std::move(tree)});
+    grown[i]->hollows = hollows_of(record, scenario.run.seed, id);
   });
 
   report = {};

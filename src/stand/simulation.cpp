@@ -52,7 +52,7 @@ std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
     events.push_back({event.age_years,
                       ThinningRule{event.method, event.ids, event.target_stems_per_ha,
                                    event.target_basal_area_m2_per_ha},
-                      event.reason});
+                      event.reason, event.protect_habitat_trees});
   return events;
 }
 
@@ -101,7 +101,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
 
   ProgressLine progress(scenario.run.years, options.show_progress);
-  SnapshotTracker snapshots;
+  SnapshotTracker snapshots(output.vtk() != nullptr);
   for (int year = 0; year <= scenario.run.years; ++year) {
     if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
     const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });

@@ -1,5 +1,8 @@
 #include "stand/snapshot.hpp"
 
+#include "stand/parallel_for.hpp"
+#include "stand/trunk_mesh.hpp"
+
 namespace heliostand {
 
 TreeSnapshot snapshot_of(const StandTree& stand_tree) {
@@ -17,6 +20,7 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   snapshot.volume_m3 = tree.stem_volume_m3();
   snapshot.mean_light = stand_tree.mean_light();
   snapshot.shoots = tree.shoots();
+  snapshot.hollow_count = static_cast<int>(stand_tree.hollows.size());
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
     for (const auto& sample : stand_tree.leaf_ball_light) snapshot.leaf_ball_light.push_back(sample.light);
@@ -30,13 +34,19 @@ StandSnapshot SnapshotTracker::take(const Stand& stand, int year_index) {
   StandSnapshot snapshot;
   snapshot.stand_age = stand.stand_age();
   snapshot.year_index = year_index;
+  std::vector<const StandTree*> standing;  // per snapshot tree: the tree whose trunk to mesh, or null
   for (std::size_t i = 0; i < trees.size(); ++i) {
     if (!trees[i].alive()) {
       if (written_as_gone_[i]) continue;
       written_as_gone_[i] = true;
     }
     snapshot.trees.push_back(snapshot_of(trees[i]));
+    standing.push_back(mesh_trunks_ && trees[i].status != TreeStatus::removed ? &trees[i] : nullptr);
   }
+  // A felled tree leaves no stem; a dead one stands as a snag. Stems are meshed on all cores.
+  parallel_for(standing.size(), [&](std::size_t k) {
+    if (standing[k]) snapshot.trees[k].trunk = trunk_mesh_of(*standing[k]);
+  });
   return snapshot;
 }
 

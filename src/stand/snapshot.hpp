@@ -11,9 +11,12 @@ TreeSnapshot snapshot_of(const StandTree& tree);
 // plus the trees that left the stand since the previous output year (shown once with their status).
 class SnapshotTracker {
  public:
+  // `mesh_trunks`: build each standing tree's trunk surface (only the VTK output reads it).
+  explicit SnapshotTracker(bool mesh_trunks = true) : mesh_trunks_(mesh_trunks) {}
   StandSnapshot take(const Stand& stand, int year_index);
 
  private:
+  bool mesh_trunks_;
   std::vector<bool> written_as_gone_;
 };
 

@@ -2,17 +2,18 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+
 #include "stand/light_response.hpp"
 
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-             std::vector<ScheduledThinning> thinning, bool protect_habitat_trees)
+             std::vector<ScheduledThinning> thinning)
     : plot_area_ha_(plot_area_ha),
       stand_age_(stand_age),
       trees_(std::move(trees)),
-      thinning_(std::move(thinning)),
-      protect_habitat_trees_(protect_habitat_trees) {}
+      thinning_(std::move(thinning)) {}
 
 void Stand::grow_year() {
   ++stand_age_;
@@ -95,7 +96,7 @@ std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {
     if (!trees_[i].alive()) continue;
     living.push_back(i);
     candidates.push_back({trees_[i].label, trees_[i].tree.dbh_cm(),
-                          protect_habitat_trees_ && trees_[i].is_habitat_tree});
+                          event.protect_habitat_trees && trees_[i].is_habitat_tree()});
   }
   std::vector<TreeEvent> removed;
   for (std::size_t chosen : select_for_thinning(event.rule, candidates, plot_area_ha_)) {
@@ -107,7 +108,11 @@ std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {
     removed.push_back({stand_age_, tree.id, tree.label, TreeEventKind::removed, event.reason,
                        tree.tree.dbh_cm(), tree.tree.height_m(), tree.tree.stem_volume_m3()});
   }
-  spdlog::info("age {}: {} removed {} trees", stand_age_, event.reason, removed.size());
+  const auto kept = std::count_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.is_protected; });
+  if (kept > 0)
+    spdlog::info("age {}: {} removed {} trees, kept {} habitat trees", stand_age_, event.reason, removed.size(), kept);
+  else
+    spdlog::info("age {}: {} removed {} trees", stand_age_, event.reason, removed.size());
   return removed;
 }
 

@@ -16,12 +16,13 @@ struct ScheduledThinning {
   int stand_age = 0;      // happens at the end of the year in which the stand reaches this age
   ThinningRule rule;
   std::string reason;     // label in events.csv, e.g. "first thinning"
+  bool protect_habitat_trees = true;  // trees with hollows are kept
 };
 
 class Stand {
  public:
   Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-        std::vector<ScheduledThinning> thinning, bool protect_habitat_trees = true);
+        std::vector<ScheduledThinning> thinning);
 
   int stand_age() const { return stand_age_; }
   double plot_area_ha() const { return plot_area_ha_; }
@@ -49,7 +50,6 @@ class Stand {
   int stand_age_;
   std::vector<StandTree> trees_;
   std::vector<ScheduledThinning> thinning_;
-  bool protect_habitat_trees_;
 };
 
 }  // namespace heliostand

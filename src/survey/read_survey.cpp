@@ -12,7 +12,9 @@
 #include <unordered_map>
 
 #include "io/input_error.hpp"
+#include "survey/check_hollows.hpp"
 #include "survey/csv_table.hpp"
+#include "survey/hollow_cell.hpp"
 #include "survey/strict_number.hpp"
 #include "survey/survey_columns.hpp"
 
@@ -21,7 +23,7 @@ namespace heliostand {
 namespace {
 
 constexpr double same_position_tolerance_m = 0.01;
-constexpr std::size_t column_count = 10;  // number of SurveyColumn values
+constexpr std::size_t column_count = 11;  // number of SurveyColumn values
 
 std::string read_whole_file(const std::filesystem::path& file, const std::string& label) {
   std::error_code ec;
@@ -109,7 +111,7 @@ ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::
 struct RowValues {
   std::array<std::optional<double>, column_count> number;
   std::array<bool, column_count> bad{};  // the cell held something that is not an acceptable value
-  std::string id, species;
+  std::string id, species, hollow;
   bool ok = true;
 };
 
@@ -126,6 +128,7 @@ class RowReader {
     row_ = &row;
     if (layout_.has(SurveyColumn::id)) row.id = cell(SurveyColumn::id);
     if (layout_.has(SurveyColumn::species)) row.species = cell(SurveyColumn::species);
+    if (layout_.has(SurveyColumn::hollow)) row.hollow = cell(SurveyColumn::hollow);
     number(SurveyColumn::x, Sign::any, true);
     number(SurveyColumn::y, Sign::any, true);
     number(SurveyColumn::height, Sign::positive, false);
@@ -285,6 +288,19 @@ class SurveyBuilder {
     } else {
       reader.problem(C::age, "no age given, and no stand age to impute it from");
     }
+    complete_hollows(row, reader, species, tree);
+  }
+
+  // The hollows in the cell, checked against the tree's trunk once its height and crown base are known.
+  void complete_hollows(const RowValues& row, RowReader& reader, const SpeciesParameters& species,
+                        SurveyRecord& tree) {
+    if (row.hollow.empty()) return;
+    auto parsed = parse_hollow_cell(row.hollow);
+    if (auto* reason = std::get_if<std::string>(&parsed)) return reader.problem(C::hollow, *reason);
+    for (const auto& spec : std::get<std::vector<hollow::HollowSpec>>(parsed))
+      tree.hollows.push_back({spec, false, file_, tree.line, layout_.name(C::hollow), "column"});
+    if (!row.ok) return;  // a bad height or crown base: no trunk to check against
+    for (const InputProblem& problem : check_tree_hollows(tree, species)) reader.problem(C::hollow, problem.reason);
   }
 
   void complete_height_and_dbh(RowValues& row, RowReader& reader, const SpeciesParameters& species,

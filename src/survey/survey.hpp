@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "survey/tree_hollow.hpp"
+
 namespace heliostand {
 
 // Which fields of a record were not in the file and were filled in by the survey allometry.
@@ -28,6 +30,7 @@ struct SurveyRecord {
   double crown_base_m = 0;      // height of the live-crown base
   double age_years = 0;
   std::string species;
+  std::vector<TreeHollow> hollows;  // survey column `hollow` and scenario [[hollow]]; non-empty: a habitat tree
   ImputedFields imputed;
 };
 

@@ -21,8 +21,9 @@ constexpr std::array crown_base_aliases{"crown_base"sv, "crown_base_m"sv, "hcb"s
                                         "crown_base_height_m"sv, "live_crown_base"sv, "hlc"sv};
 constexpr std::array age_aliases{"age"sv, "age_years"sv, "age_y"sv, "tree_age"sv};
 constexpr std::array species_aliases{"species"sv, "sp"sv, "spp"sv};
+constexpr std::array hollow_aliases{"hollow"sv, "hollows"sv, "cavity"sv, "cavities"sv};
 
-const std::array<SurveyColumnInfo, 10> columns{{
+const std::array<SurveyColumnInfo, 11> columns{{
     {SurveyColumn::id, "id", id_aliases},
     {SurveyColumn::x, "x", x_aliases},
     {SurveyColumn::y, "y", y_aliases},
@@ -33,6 +34,7 @@ const std::array<SurveyColumnInfo, 10> columns{{
     {SurveyColumn::crown_base, "crown_base", crown_base_aliases},
     {SurveyColumn::age, "age", age_aliases},
     {SurveyColumn::species, "species", species_aliases},
+    {SurveyColumn::hollow, "hollow", hollow_aliases},
 }};
 }  // namespace
 

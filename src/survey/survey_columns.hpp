@@ -9,7 +9,7 @@
 
 namespace heliostand {
 
-enum class SurveyColumn { id, x, y, height, dbh, crown_radius, crown_diameter, crown_base, age, species };
+enum class SurveyColumn { id, x, y, height, dbh, crown_radius, crown_diameter, crown_base, age, species, hollow };
 
 struct SurveyColumnInfo {
   SurveyColumn column;

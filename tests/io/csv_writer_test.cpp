@@ -71,7 +71,8 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
                             "stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
                             "mean_height_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
                             "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha"}));
-  EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status", "age",
+  EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status",
+                                                  "habitat_tree", "hollows", "age",
                                                   "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",
                                                   "volume_m3", "leaf_balls", "mean_light", "root_length_m",
                                                   "root_max_depth_m", "root_uptake"}));

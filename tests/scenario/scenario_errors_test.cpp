@@ -54,7 +54,7 @@ TEST(ScenarioErrors, MissingTablesAndRequiredKeys) {
 TEST(ScenarioErrors, UnknownKeysAndTables) {
   EXPECT_THAT(problems_of("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
               ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
-                          "thinning, roots, soil, coupling, root_pruning)",
+                          "thinning, roots, soil, coupling, root_pruning, hollow)",
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: device, output_interval, "
                           "seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
@@ -154,7 +154,7 @@ TEST(ScenarioErrors, ThinningStructure) {
                           "scenario.toml:17: key 'thinning[3]': method \"from_below\" needs exactly one of "
                           "target_stems_per_ha and target_basal_area_m2_per_ha, got neither",
                           "scenario.toml:26: key 'thinning[4].note': unknown key (known keys here: age, ids, method, "
-                          "reason, target_basal_area_m2_per_ha, target_stems_per_ha)",
+                          "protect_habitat_trees, reason, target_basal_area_m2_per_ha, target_stems_per_ha)",
                           "scenario.toml:21: key 'thinning[4]': method \"from_above\" needs exactly one of "
                           "target_stems_per_ha and target_basal_area_m2_per_ha, got both",
                           "scenario.toml:30: key 'thinning[5].ids[2]': expected a tree id (string or integer), got a "

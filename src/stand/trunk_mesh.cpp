@@ -1,0 +1,24 @@
+#include "stand/trunk_mesh.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "hollow/conifer_trunk.hpp"
+
+namespace heliostand {
+
+std::shared_ptr<const hollow::HollowMesh> trunk_mesh_of(const StandTree& stand_tree) {
+  const ConiferTree& tree = stand_tree.tree;
+  if (tree.height_m() <= 0.0) return nullptr;
+  const hollow::TrunkSurface trunk = hollow::conifer_trunk(tree.species(), tree.height_m(), tree.crown_base_m());
+  if (stand_tree.hollows.empty())
+    return std::make_shared<const hollow::HollowMesh>(hollow::build_trunk_mesh(trunk, plain_trunk_tolerance_m));
+  try {
+    return std::make_shared<const hollow::HollowMesh>(hollow::build_hollow(stand_tree.hollows.front(), trunk).mesh);
+  } catch (const InputError& error) {
+    spdlog::warn("tree '{}': its hollow no longer fits its trunk at height {:.1f} m ({}); trunk written without it",
+                 stand_tree.label, tree.height_m(), error.problems().front().format("field"));
+    return std::make_shared<const hollow::HollowMesh>(hollow::build_trunk_mesh(trunk, plain_trunk_tolerance_m));
+  }
+}
+
+}  // namespace heliostand
