@@ -1,5 +1,6 @@
 // heliostand check SCENARIO: read and validate the scenario and its survey, write nothing.
-#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
@@ -21,8 +22,17 @@ void print_summary(const Scenario& scenario) {
              scenario.stand.age_at_survey_years, scenario.final_age_years(), scenario.run.years,
              scenario.run.seed, scenario.run.output_interval_years);
   for (const auto& event : scenario.thinning)
-    fmt::print("thinning   age {}: {} ({})\n", event.age_years, event.reason,
-               thinning_method_name(event.method));
+    fmt::print("thinning   age {}: {} ({}{})\n", event.age_years, event.reason, thinning_method_name(event.method),
+               event.protect_habitat_trees ? "" : ", habitat trees not protected");
+  std::vector<std::string> habitat;
+  std::size_t hollows = 0;
+  for (const auto& tree : scenario.survey.trees) {
+    if (tree.hollows.empty()) continue;
+    habitat.push_back(tree.id);
+    hollows += tree.hollows.size();
+  }
+  if (!habitat.empty())
+    fmt::print("habitat    {} trees with {} hollows: {}\n", habitat.size(), hollows, fmt::join(habitat, ", "));
 }
 
 }  // namespace

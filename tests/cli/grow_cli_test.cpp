@@ -224,6 +224,7 @@ TEST(CheckCli, GoodScenarioPrintsASummary) {
   const auto run = run_cli("check " + source_path("stands/sobetsu/scenario.toml").string());
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("62 trees"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("habitat    3 trees with 3 hollows: S15, S20, S22"), std::string::npos) << run.output;
 }
 
 TEST(CheckCli, BadKeysAreListedWithTheirPathAndExitTwo) {
