@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "geometry/angles.hpp"
 #include "hollow/bark_flow.hpp"
@@ -61,12 +62,16 @@ Columns stem_columns(const HollowSpec& spec, const TrunkSurface& trunk, const St
 
 // Stem rows (chart y): regular ones, plus the wound rows where the callus foot's reach changes, none exactly
 // on the foot's apexes (the split line would touch the foot there).
+// Only rows inside the band are kept; the band's edges are rows themselves (unless the band reaches the tip).
 std::vector<double> stem_rows(const HollowSpec& spec, const TrunkSurface& trunk, const WoundProfile& foot,
-                              const Patch& patch, double spacing) {
+                              const Patch& patch, double spacing, const StemBand& band) {
   std::vector<double> extra;
   for (double y : wound_rows(foot, 0.1 * spacing)) extra.push_back(y + spec.height_m);
+  if (band.lo > 0.0) extra.push_back(band.lo);
+  if (!band.reaches_tip()) extra.push_back(band.hi);
   std::vector<double> heights = stem_heights(trunk, spec.height_m - patch.down, spec.height_m + patch.up,
                                              spec.bark_segment_m, extra);
+  std::erase_if(heights, [&band](double h) { return h < band.lo || h > band.hi; });
   const double keep_off = 1e-4 * (foot.y_max() - foot.y_min());
   std::vector<double> rows;
   for (double h : heights) {
@@ -113,7 +118,20 @@ void join_wound_strips(Builder& b, const std::vector<std::vector<int>>& grid, in
 
 }  // namespace
 
-HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, BuildOptions options) {
+PatchBounds detail::patch_bounds(const HollowSpec& spec, const TrunkSurface& trunk) {
+  // The callus foot lies r · flare across the stem from the rim (callus.cpp), and the rim within ±H/2 of the
+  // centre (cylindrical placement; the tangent-plane projection can push it a little further where a
+  // flaring stem bulges through the plane, hence the margin); the flare is largest at the hollow's lowest point.
+  const double lowest = std::max(spec.height_m - spec.wound_height_m / 2.0, 0.0);
+  const double rim = (spec.placement == Placement::cylindrical ? 0.5 : 0.6) * spec.wound_height_m;
+  const double foot_reach = rim + spec.callus_radius_m * trunk.flare_factor(lowest);
+  const double half = std::max(spec.wound_height_m, 1.5 * foot_reach);
+  return {spec.height_m - std::min(half, spec.height_m),
+          spec.height_m + std::min(half, 0.95 * trunk.tree_height() - spec.height_m)};
+}
+
+HollowModel detail::build_hollow_band(const HollowSpec& spec, const TrunkSurface& trunk, BuildOptions options,
+                                      const StemBand& band) {
   if (auto problems = validate(spec, trunk); !problems.empty()) throw InputError(std::move(problems), "field");
 
   HollowModel model;
@@ -127,13 +145,15 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   for (const auto& ring : model.callus.rings) foot_loop.push_back(ring.foot_xy);
   const WoundProfile foot(foot_loop);
   const Patch patch = bark_patch(spec, trunk, chart, foot);
+  if (spec.height_m - patch.down < band.lo || spec.height_m + patch.up > band.hi)
+    throw std::logic_error("hollow: bark patch outside its stem band (patch_bounds must bound bark_patch)");
   model.patch_half_width = patch.half_width;
   const BarkFlow flow(foot, patch.half_width);
   Surroundings around{&chart, patch.half_width, patch.up, patch.down, spec.callus_radius_m, &model.outline_xy, {}};
   for (std::size_t j = 0; j < model.callus.rings.size(); ++j) around.mean_radius.push_back(model.callus.mean_radius(j));
 
   const Columns cols = stem_columns(spec, trunk, chart, patch.half_width);
-  const std::vector<double> rows = stem_rows(spec, trunk, foot, patch, cols.spacing);
+  const std::vector<double> rows = stem_rows(spec, trunk, foot, patch, cols.spacing, band);
   const int n_cols = static_cast<int>(cols.x.size()), n_rows = static_cast<int>(rows.size());
   // The wound's reach on either side, once per row (the flow needs it for every line).
   std::vector<double> reach_left(n_rows), reach_right(n_rows);
@@ -155,7 +175,7 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
                          xy.x - cols.x[c], lift, c);
     }
   }
-  close_tip(b, grid, trunk.tree_height());
+  if (band.reaches_tip()) close_tip(b, grid, trunk.tree_height());
   const auto corner = add_callus_corners(b, model.callus, chart, around);
   add_grid_quads(b, grid);
   join_wound_strips(b, grid, cols.split, rows, foot, corner);
@@ -177,6 +197,10 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
   }
   model.mesh = std::move(b.mesh);
   return model;
+}
+
+HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, BuildOptions options) {
+  return build_hollow_band(spec, trunk, options, StemBand{});
 }
 
 HollowMesh build_trunk_mesh(const TrunkSurface& trunk, double tolerance_m) {

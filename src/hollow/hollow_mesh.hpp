@@ -59,4 +59,21 @@ HollowModel build_hollow(const HollowSpec& spec, const TrunkSurface& trunk, Buil
 // A plain stem without a hollow, same grid rules (for trees without hollows in the stand output).
 HollowMesh build_trunk_mesh(const TrunkSurface& trunk, double tolerance_m = 0.0005);
 
+// Several hollows on one stem are stacked in height: each hollow's bark patch (patch_bounds in
+// stem_mesh_builder.hpp) gets a band of the stem of its own, and neighbouring bands are joined by a strip of
+// plain stem at least this tall. Side by side at one height is not supported.
+inline constexpr double min_hollow_gap_m = 0.02;
+
+// Each hollow's own problems (validate(), field prefixed "hollows[i]." with i its index in `hollows`), and a
+// problem on "hollows[j].height_m" for every hollow whose bark patch comes within min_hollow_gap_m of
+// another's (the reason names the other hollow and the centre distance needed). Empty when the stem can be
+// built.
+std::vector<InputProblem> validate_hollows(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk);
+
+// One manifold mesh of the stem with all its hollows (in any order): none → build_trunk_mesh(trunk); one →
+// build_hollow(spec, trunk).mesh; several → a band per hollow (sorted by height) built like build_hollow,
+// joined by zipping the rings that face each other across each gap. Borders: the base ring and each cavity
+// lip. Throws InputError (field kind "field") with validate_hollows()'s problems.
+HollowMesh build_stem_with_hollows(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk);
+
 }  // namespace heliostand::hollow

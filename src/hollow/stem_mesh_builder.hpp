@@ -4,6 +4,7 @@
 // bark lift around a wound and the subdivision that makes faces follow the stem's convexity.
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -92,5 +93,25 @@ std::vector<std::vector<int>> add_callus_corners(Builder& b, const Callus& callu
 // follow the stem's convexity; the split decision is per edge, so neighbouring faces stay conforming.
 // Returns the number of passes that split at least one edge.
 int follow_convexity(Builder& b, const Surroundings& around, double tolerance);
+
+// A height range of the stem that one mesh piece covers (several hollows on one stem: one band each, joined
+// by ring zips). The default band is the whole stem, closed at the tip.
+struct StemBand {
+  double lo = 0.0;
+  double hi = std::numeric_limits<double>::infinity();
+  bool reaches_tip() const { return std::isinf(hi); }
+};
+
+// Heights the hollow's bark patch can occupy at most (it is sized from the callus foot, known only once the
+// callus is built; this bound uses the foot's largest possible reach).
+struct PatchBounds {
+  double lo, hi;
+};
+PatchBounds patch_bounds(const HollowSpec& spec, const TrunkSurface& trunk);
+
+// build_hollow() restricted to a band: rows only within [lo, hi] (both edges are rows), the tip closed only if
+// the band reaches it. The band must hold patch_bounds(). No hollow: build_trunk_mesh().
+HollowModel build_hollow_band(const HollowSpec& spec, const TrunkSurface& trunk, BuildOptions options,
+                              const StemBand& band);
 
 }  // namespace heliostand::hollow::detail

@@ -79,6 +79,15 @@ TEST(FigureMeshes, WriteSeedLikeFiguresAsVtp) {
   write_vtp(build_broken_stem(broken, TrunkSurface::seed001_taper(30.0, 15.0)).mesh,
             (out / "beyond_broken_stem_ring.vtp").string());
   EXPECT_TRUE(std::filesystem::exists(out / "beyond_broken_stem_ring.vtp"));
+  // Beyond the seed: two hollows on one stem, one above the other (build_stem_with_hollows).
+  HollowSpec low, high;
+  low.height_m = 1.2, low.azimuth_deg = -20.0, low.width_m = 0.14, low.wound_height_m = 0.24, low.seed = 2024;
+  high.height_m = 1.9, high.azimuth_deg = 40.0, high.width_m = 0.20, high.wound_height_m = 0.30;
+  high.callus_radius_m = 0.02, high.bulge_m = 0.03, high.seed = 2025;
+  const TrunkSurface stacked_trunk = TrunkSurface::seed001_taper(30.0, 15.0);
+  ASSERT_TRUE(validate_hollows({low, high}, stacked_trunk).empty());
+  write_vtp(build_stem_with_hollows({low, high}, stacked_trunk), (out / "beyond_two_hollows.vtp").string());
+  EXPECT_TRUE(std::filesystem::exists(out / "beyond_two_hollows.vtp"));
   // A stem without a hollow, for comparison.
   write_vtp(build_trunk_mesh(TrunkSurface::seed001_taper(30.0, 15.0)), (out / "stem_without_hollow.vtp").string());
   EXPECT_TRUE(std::filesystem::exists(out / "stem_without_hollow.vtp"));
