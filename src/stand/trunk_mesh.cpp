@@ -13,9 +13,9 @@ std::shared_ptr<const hollow::HollowMesh> trunk_mesh_of(const StandTree& stand_t
   if (stand_tree.hollows.empty())
     return std::make_shared<const hollow::HollowMesh>(hollow::build_trunk_mesh(trunk, plain_trunk_tolerance_m));
   try {
-    return std::make_shared<const hollow::HollowMesh>(hollow::build_hollow(stand_tree.hollows.front(), trunk).mesh);
+    return std::make_shared<const hollow::HollowMesh>(hollow::build_stem_with_hollows(stand_tree.hollows, trunk));
   } catch (const InputError& error) {
-    spdlog::warn("tree '{}': its hollow no longer fits its trunk at height {:.1f} m ({}); trunk written without it",
+    spdlog::warn("tree '{}': its hollows no longer fit its trunk at height {:.1f} m ({}); trunk written without it",
                  stand_tree.label, tree.height_m(), error.problems().front().format("field"));
     return std::make_shared<const hollow::HollowMesh>(hollow::build_trunk_mesh(trunk, plain_trunk_tolerance_m));
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -57,6 +58,10 @@ std::variant<hollow::HollowSpec, std::string> parse_one(std::string_view text, s
   if (fields.size() == 4) {
     spec.width_m = values[2];
     spec.wound_height_m = values[3];
+    // The cell has no room for the callus: scale the default roll to the entrance, so a small woodpecker hole
+    // gets a thin roll rather than an error (r ≤ W/4 and I ≤ W/4 − r, seed 004).
+    spec.callus_radius_m = std::clamp(spec.width_m / 8.0, hollow::seed_unit_m, hollow::HollowSpec{}.callus_radius_m);
+    spec.bulge_m = std::clamp(spec.width_m / 4.0 - spec.callus_radius_m, 0.0, hollow::HollowSpec{}.bulge_m);
   }
   return spec;
 }

@@ -4,7 +4,8 @@
 //
 //   HEIGHT_M/AZIMUTH_DEG[/WIDTH_M/WOUND_HEIGHT_M]   several separated by ';', e.g. "1.4/135;3.2/300/0.08/0.15"
 //
-// An empty cell means no hollow. Sizes not given keep the HollowSpec defaults (docs/formats.md).
+// An empty cell means no hollow. Sizes not given keep the HollowSpec defaults; with a width W given, the callus
+// roll follows it: r = W/8 within [0.01, 0.015] m, I = W/4 − r within [0, 0.01] m (docs/formats.md).
 #include <string>
 #include <string_view>
 #include <variant>

@@ -229,7 +229,7 @@ TEST_F(VtkTimeSeries, AnExtraBlockBuilderAddsANamedBlock) {
                     }});
   const auto stand = testing::make_synthetic_stand(12, 2);
   auto multiblock = read_multiblock(folder_.path_of(writer.write_year(stand.snapshot)));
-  ASSERT_EQ(multiblock->GetNumberOfBlocks(), 4u);
+  ASSERT_EQ(multiblock->GetNumberOfBlocks(), 5u);  // branches, leaf_balls, trees, trunk + roots
   vtkPolyData* roots = block_named(*multiblock, "roots");
   ASSERT_NE(roots, nullptr);
   EXPECT_EQ(time_value(*roots), 12.0);

@@ -82,24 +82,39 @@ TEST(HabitatTrees, TrunkMeshCarriesTheHollowAndThePlainStemDoesNot) {
 }
 
 TEST(HabitatTrees, SnapshotFlagsTheHabitatTreeAndTheTrunkBlockPlacesEveryStem) {
-  Stand stand = four_trees_with_a_habitat_tree(true);
+  std::vector<StandTree> trees;
+  for (int i = 0; i < 4; ++i) trees.push_back(planted(i, 3.0 * i, 30 - 2 * i));
+  trees[3].hollows.push_back(small_hollow());
+  hollow::HollowSpec higher = small_hollow();
+  higher.height_m = 2.0;
+  higher.azimuth_deg = 270;
+  trees[2].hollows = {small_hollow(), higher};  // two hollows, stacked on one stem
+  Stand stand(0.01, 30, std::move(trees), {});
   SnapshotTracker tracker;
   const StandSnapshot snapshot = tracker.take(stand, 0);
   ASSERT_EQ(snapshot.trees.size(), 4u);
   EXPECT_EQ(snapshot.trees[3].hollow_count, 1);
+  EXPECT_EQ(snapshot.trees[2].hollow_count, 2);
   EXPECT_EQ(snapshot.trees[0].hollow_count, 0);
   const auto block = build_trunk_block(snapshot);
   vtkDataArray* tree_id = block->GetPointData()->GetArray("tree_id");
   vtkDataArray* part = block->GetPointData()->GetArray("part");
   ASSERT_TRUE(tree_id && part);
   int callus_of_tree_3 = 0, callus_elsewhere = 0;
+  double callus_low_of_tree_2 = 0, callus_high_of_tree_2 = 0;  // callus points near each of its two hollows
   std::vector<double> min_x(4, 1e9);
   for (vtkIdType p = 0; p < block->GetNumberOfPoints(); ++p) {
     const int id = static_cast<int>(tree_id->GetTuple1(p));
     min_x[id] = std::min(min_x[id], block->GetPoint(p)[0]);
-    if (part->GetTuple1(p) == 2) (id == 3 ? callus_of_tree_3 : callus_elsewhere)++;
+    if (part->GetTuple1(p) != 2) continue;
+    const double z = block->GetPoint(p)[2];
+    if (id == 3) ++callus_of_tree_3;
+    else if (id == 2) (z < 1.5 ? callus_low_of_tree_2 : callus_high_of_tree_2) += 1;
+    else ++callus_elsewhere;
   }
   EXPECT_GT(callus_of_tree_3, 0);
+  EXPECT_GT(callus_low_of_tree_2, 0);
+  EXPECT_GT(callus_high_of_tree_2, 0);
   EXPECT_EQ(callus_elsewhere, 0);
   for (int id = 0; id < 4; ++id) EXPECT_NEAR(min_x[id], 3.0 * id, 0.3) << "tree " << id;  // at its own position
   EXPECT_GT(block->GetNumberOfCells(), 0);

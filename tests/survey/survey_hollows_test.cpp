@@ -35,6 +35,13 @@ TEST(HollowCell, HeightAndAzimuthOrTheFullEntranceSeveralPerCell) {
   EXPECT_DOUBLE_EQ(hollows[1].azimuth_deg, 300);
   EXPECT_DOUBLE_EQ(hollows[1].width_m, 0.08);
   EXPECT_DOUBLE_EQ(hollows[1].wound_height_m, 0.15);
+  // The callus roll follows the entrance: r = W/8 = 0.01 m, I = W/4 − r = 0.01 m.
+  EXPECT_DOUBLE_EQ(hollows[1].callus_radius_m, 0.01);
+  EXPECT_DOUBLE_EQ(hollows[1].bulge_m, 0.01);
+  // A 5 cm hole: r at its 1 cm minimum, I = 0.0125 − 0.01.
+  const auto small = std::get<std::vector<hollow::HollowSpec>>(parse_hollow_cell("2/0/0.05/0.08"));
+  EXPECT_DOUBLE_EQ(small[0].callus_radius_m, 0.01);
+  EXPECT_NEAR(small[0].bulge_m, 0.0025, 1e-12);
 }
 
 TEST(HollowCell, BadCellsSayWhichHollowAndField) {
@@ -79,6 +86,19 @@ TEST(SurveyHollows, HollowsTheTrunkCannotCarryAreErrorsNamingTreeAndField) {
   EXPECT_THAT(problems[1], HasSubstr(at + "3: column 'Cavity': tree \"2\", hollow 1: width_m: 0.6 m is too wide"));
   EXPECT_EQ(problems[2], at + "4: column 'Cavity': hollow 1: width_m: expected a number > 0, got \"-0.1\"");
   EXPECT_EQ(problems[3], at + "5: column 'Cavity': hollow 1: azimuth_deg: expected a number, got \"north\"");
+}
+
+TEST(SurveyHollows, SeveralHollowsOnOneTreeMustBeStackedApart) {
+  const auto good = write_test_file("hollows/two.csv", header + "1,2,2,9,12,4,30,1.3/90;4.0/270/0.06/0.1\n");
+  ASSERT_EQ(read_survey(good).trees[0].hollows.size(), 2u);
+
+  // 20 cm apart: the two bark patches overlap (each reaches about twice the wound height around it).
+  const auto clash = write_test_file("hollows/clash.csv", header + "1,2,2,9,12,4,30,1.3/90;1.5/270\n");
+  const auto problems = input_problems([&] { read_survey(clash); });
+  ASSERT_EQ(problems.size(), 1u) << ::testing::PrintToString(problems);
+  EXPECT_THAT(problems[0], HasSubstr(clash.string() + ":2: column 'Cavity': tree \"1\", hollow 2: height_m: its bark "
+                                                      "patch"));
+  EXPECT_THAT(problems[0], HasSubstr("of hollow 1 of column 'Cavity' at 1.3 m"));
 }
 
 }  // namespace
