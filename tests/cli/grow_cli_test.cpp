@@ -1,6 +1,8 @@
 // End-to-end runs of `heliostand grow` and `heliostand check` on the example stands, as a user runs them.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkInformation.h>
@@ -76,6 +78,8 @@ void check_thinning(const fs::path& folder) {
   EXPECT_EQ(events[0].at("label"), "4");
   EXPECT_EQ(events[0].at("stand_age"), "23");
   EXPECT_EQ(events[0].at("event"), "removed");
+  for (const auto& row : read_table(folder / "trees.csv"))
+    EXPECT_EQ(row.at("habitat_tree"), row.at("label") == "5" ? "1" : "0") << "tree " << row.at("label");
 
   const auto table = read_table(folder / "stand_table.csv");
   ASSERT_EQ(table.size(), 6u) << "ages 20..25, output every year";
@@ -127,6 +131,26 @@ void check_vtk_years(const fs::path& folder) {
 
   const auto first = read_year(folder, 20);
   EXPECT_EQ(block(first, "trees")->GetNumberOfPoints(), 8);
+
+  // Tree "5" carries a hollow (survey column `hollow`): flagged in the trees block, and its callus roll is in
+  // the trunk block, on its stem only.
+  vtkPolyData* trunk = block(last, "trunk");
+  ASSERT_NE(trunk, nullptr);
+  auto* part = trunk->GetPointData()->GetArray("part");
+  auto* trunk_tree = trunk->GetPointData()->GetArray("tree_id");
+  ASSERT_TRUE(part && trunk_tree);
+  std::set<int> stems, callus_on;
+  for (vtkIdType p = 0; p < trunk->GetNumberOfPoints(); ++p) {
+    stems.insert(static_cast<int>(trunk_tree->GetTuple1(p)));
+    if (part->GetTuple1(p) == 2) callus_on.insert(static_cast<int>(trunk_tree->GetTuple1(p)));
+  }
+  EXPECT_EQ(stems.size(), 7u) << "a stem for every standing tree";
+  EXPECT_EQ(callus_on, std::set<int>{4}) << "tree_id 4 is survey tree \"5\"";
+  auto* habitat = trees->GetPointData()->GetArray("habitat_tree");
+  auto* tree_id = trees->GetPointData()->GetArray("tree_id");
+  ASSERT_TRUE(habitat && tree_id);
+  for (vtkIdType p = 0; p < trees->GetNumberOfPoints(); ++p)
+    EXPECT_EQ(habitat->GetTuple1(p), tree_id->GetTuple1(p) == 4 ? 1.0 : 0.0) << "tree_id " << tree_id->GetTuple1(p);
 }
 
 void check_opencl_agrees(const fs::path& folder) {
