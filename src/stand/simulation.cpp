@@ -121,6 +121,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
         output.write_year(snapshot);
         return 0;
       });
+    if (options.observe_year) options.observe_year(stand, year);
     progress.update(year);
   }
   progress.finish();

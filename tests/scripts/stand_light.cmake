@@ -1,0 +1,23 @@
+# Seed 000's light response at stand scale (validation/stand_light): gap regrowth after the example plantation's
+# first thinning vs an unthinned control, and self-thinning of a dense unthinned plantation. Both runs' outputs
+# and build/validation/stand_light/stand_light.md; the thinned and control runs are then rendered side by side
+# with the stand renderer (ParaView; skipped without it outside CI).
+add_executable(stand_light_validation ${PROJECT_SOURCE_DIR}/validation/stand_light/stand_light_validation.cpp)
+target_link_libraries(stand_light_validation PRIVATE heliostand_core)
+target_include_directories(stand_light_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
+target_compile_definitions(stand_light_validation PRIVATE HELIOSTAND_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+set(STAND_LIGHT_OUT ${PROJECT_BINARY_DIR}/validation/stand_light)
+add_test(NAME validation.stand_light.findings COMMAND stand_light_validation ${STAND_LIGHT_OUT})
+set_tests_properties(validation.stand_light.findings PROPERTIES
+  TIMEOUT 1200 LABELS "validation" FIXTURES_SETUP heliostand_stand_light_runs
+  ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+
+foreach(run gap_thinned gap_control self_thinning)
+  add_test(NAME validation.stand_light.render_${run}
+           COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh
+                   ${STAND_LIGHT_OUT}/${run}/stand.pvd ${STAND_LIGHT_OUT}/pictures/${run})
+  set_tests_properties(validation.stand_light.render_${run} PROPERTIES
+    FIXTURES_REQUIRED heliostand_stand_light_runs SKIP_RETURN_CODE 77 TIMEOUT 600
+    RESOURCE_LOCK xvfb LABELS "paraview")
+endforeach()

@@ -1,0 +1,228 @@
+// Seed 000's light response at stand scale (issue 4, item 5), on whole plantations grown by the stand manager:
+//
+//   1. Gap regrowth: the example plantation (stands/sobetsu) grown with its first thinning and, as the control,
+//      without it. Every residual tree next to a removed one is measured: how far its living foliage reaches
+//      toward the gap (the farthest leaf-ball centre along the horizontal direction to the removed stem), in
+//      the thinned run and in the control. Seed 000 Fig. 11: the crown extends further into the gap.
+//   2. Self-thinning: a dense unthinned young plantation (generated here: 64 trees at 1.5 m spacing, 4 444
+//      stems/ha, heights spread ±30 %) loses its suppressed trees to light, the shorter ones.
+//
+//   stand_light_validation OUT_DIR [--years N]
+//
+// Writes both runs' full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
+// measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
+// Cost is kept CI-sized: roots off, a coarse sky (8 x 16 patches), 10 years.
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "rng/random_stream.hpp"
+#include "scenario/scenario.hpp"
+#include "stand/simulation.hpp"
+#include "stand/stand.hpp"
+
+namespace fs = std::filesystem;
+using namespace heliostand;
+
+namespace {
+
+// What the measurements need of a tree at the end of a run.
+struct TreeRecord {
+  glm::dvec3 stem{0.0};
+  std::vector<glm::dvec3> foliage;  // leaf-ball centres
+  TreeStatus status = TreeStatus::alive;
+  int status_age = -1;
+  double height_m = 0;
+};
+
+using StandRecord = std::map<std::string, TreeRecord>;  // by survey label
+
+StandRecord record_of(const Stand& stand) {
+  StandRecord record;
+  for (const StandTree& tree : stand.trees()) {
+    TreeRecord& r = record[tree.label];
+    r.stem = tree.tree.stem_base();
+    if (tree.alive())
+      for (const LeafBall& ball : tree.tree.leaf_balls()) r.foliage.push_back(ball.centre);
+    r.status = tree.status;
+    r.status_age = tree.status_changed_at_age;
+    r.height_m = tree.tree.height_m();
+  }
+  return record;
+}
+
+// Runs the scenario into `folder`; returns the stand at year 0 and at the end.
+std::pair<StandRecord, StandRecord> grow(const Scenario& scenario, const fs::path& folder) {
+  std::pair<StandRecord, StandRecord> records;
+  SimulationOptions options;
+  options.output_folder = folder;
+  options.force = true;
+  options.observe_year = [&](const Stand& stand, int year) {
+    if (year == 0) records.first = record_of(stand);
+    if (year == scenario.run.years) records.second = record_of(stand);
+  };
+  run_simulation(scenario, options);
+  return records;
+}
+
+void make_ci_sized(Scenario& scenario, int years) {
+  scenario.roots.enabled = false;
+  scenario.light.sky_bands = 8;
+  scenario.light.sky_sectors = 16;
+  const int end_age = scenario.stand.age_at_survey_years + years;
+  std::erase_if(scenario.thinning, [&](const ThinningEvent& e) { return e.age_years > end_age; });
+  scenario.set_years(years);
+}
+
+// Farthest reach of the foliage from the stem along the horizontal unit vector `toward`.
+double reach(const TreeRecord& tree, glm::dvec3 toward) {
+  double farthest = 0.0;
+  for (const auto& centre : tree.foliage) farthest = std::max(farthest, glm::dot(centre - tree.stem, toward));
+  return farthest;
+}
+
+struct Finding {
+  std::string text;
+  bool holds = false;
+};
+
+// --- 1. Gap regrowth --------------------------------------------------------------------------------------
+
+constexpr double gap_neighbour_distance_m = 4.0;  // residual trees this close to a removed stem border its gap
+
+Finding gap_regrowth(const fs::path& source, const fs::path& out, int years, std::string& report) {
+  Scenario thinned = load_scenario(source / "stands" / "sobetsu" / "scenario.toml");
+  make_ci_sized(thinned, years);
+  Scenario control = thinned;
+  control.thinning.clear();
+  const StandRecord with_gaps = grow(thinned, out / "gap_thinned").second;
+  const StandRecord without = grow(control, out / "gap_control").second;
+
+  report += fmt::format("## Gap regrowth (example plantation, age {} -> {})\n\n",
+                        thinned.stand.age_at_survey_years, thinned.final_age_years());
+  report += "Residual trees within 4 m of a stem removed by the first thinning; reach = farthest living leaf-ball "
+            "centre from the stem toward the removed stem (m), thinned run vs the unthinned control.\n\n"
+            "| tree | gap tree | distance m | reach thinned | reach control | difference |\n|---|---|---|---|---|---|\n";
+  int neighbours = 0, further = 0;
+  double sum_difference = 0;
+  for (const auto& [label, tree] : with_gaps) {
+    if (tree.status != TreeStatus::alive) continue;
+    const std::string* gap = nullptr;
+    double nearest = gap_neighbour_distance_m;
+    for (const auto& [other, removed] : with_gaps) {
+      if (removed.status != TreeStatus::removed) continue;
+      const double d = std::hypot(removed.stem.x - tree.stem.x, removed.stem.y - tree.stem.y);
+      if (d < nearest) nearest = d, gap = &other;
+    }
+    if (!gap || without.at(label).status != TreeStatus::alive) continue;
+    glm::dvec3 toward = with_gaps.at(*gap).stem - tree.stem;
+    toward.z = 0;
+    toward /= glm::length(toward);
+    const double into_gap = reach(tree, toward), beside_neighbour = reach(without.at(label), toward);
+    ++neighbours;
+    further += into_gap > beside_neighbour;
+    sum_difference += into_gap - beside_neighbour;
+    report += fmt::format("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:+.2f} |\n", label, *gap, nearest, into_gap,
+                          beside_neighbour, into_gap - beside_neighbour);
+  }
+  const double mean = neighbours ? sum_difference / neighbours : 0.0;
+  Finding finding{fmt::format("gap regrowth: {} of {} gap neighbours reach further toward the gap than in the "
+                              "control; mean difference {:+.3f} m (expected: a majority, mean > 0)",
+                              further, neighbours, mean),
+                  neighbours > 0 && 2 * further > neighbours && mean > 0.0};
+  report += fmt::format("\n{}\n\n", finding.text);
+  return finding;
+}
+
+// --- 2. Self-thinning -------------------------------------------------------------------------------------
+
+// A dense young plantation: an 8 x 8 grid at 1.5 m (12 m x 12 m, 4 444 stems/ha), 12 years old, heights drawn
+// uniformly in ±30 % of 4.5 m so that some trees are overtopped from the start.
+fs::path write_dense_plantation(const fs::path& folder) {
+  fs::create_directories(folder);
+  std::ofstream survey(folder / "survey.csv");
+  survey << "id,x,y,height\n";
+  RandomStream random(11, {0x44454E53});  // "DENS"
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      survey << fmt::format("D{:02d},{:.2f},{:.2f},{:.2f}\n", 8 * i + j + 1, 0.75 + 1.5 * i, 0.75 + 1.5 * j,
+                            4.5 * random.uniform(0.7, 1.3));
+  std::ofstream(folder / "scenario.toml") << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 12\n"
+                                             "x_min = 0\ny_min = 0\nx_max = 12\ny_max = 12\n"
+                                             "[run]\nyears = 10\nseed = 3\noutput_interval = 2\n"
+                                             "[light]\nperiodic = true\n"
+                                             "[roots]\nenabled = false\n";
+  return folder / "scenario.toml";
+}
+
+Finding self_thinning(const fs::path& out, int years, std::string& report) {
+  Scenario dense = load_scenario(write_dense_plantation(out / "self_thinning_input"));
+  make_ci_sized(dense, years);
+  const auto [start, end] = grow(dense, out / "self_thinning");
+
+  std::map<int, int> deaths_by_age;
+  double dead_height = 0, survivor_height = 0;
+  int dead = 0, survivors = 0;
+  for (const auto& [label, tree] : end) {
+    const double surveyed_height = start.at(label).height_m;
+    if (tree.status == TreeStatus::dead) {
+      ++deaths_by_age[tree.status_age];
+      ++dead;
+      dead_height += surveyed_height;
+    } else {
+      ++survivors;
+      survivor_height += surveyed_height;
+    }
+  }
+  report += fmt::format("## Self-thinning (dense unthinned plantation, 64 trees at 1.5 m, age {} -> {})\n\n",
+                        dense.stand.age_at_survey_years, dense.final_age_years());
+  report += "| stand age | trees dead of light |\n|---|---|\n";
+  for (const auto& [age, count] : deaths_by_age) report += fmt::format("| {} | {} |\n", age, count);
+  const double mean_dead = dead ? dead_height / dead : 0.0, mean_alive = survivors ? survivor_height / survivors : 0.0;
+  Finding finding{fmt::format("self-thinning: {} of 64 trees died of light; their mean height at the start {:.2f} m "
+                              "vs {:.2f} m for the survivors (expected: deaths, and the dead were the shorter)",
+                              dead, mean_dead, mean_alive),
+                  dead > 0 && mean_dead < mean_alive};
+  report += fmt::format("\n{}\n\n", finding.text);
+  return finding;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2 && !(argc == 4 && std::strcmp(argv[2], "--years") == 0)) {
+    std::cerr << "usage: stand_light_validation OUT_DIR [--years N]\n";
+    return 2;
+  }
+  const fs::path out = argv[1];
+  const int years = argc == 4 ? std::atoi(argv[3]) : 10;
+  if (years < 1) {
+    std::cerr << "error: --years must be at least 1\n";
+    return 2;
+  }
+  spdlog::set_level(spdlog::level::warn);
+  fs::create_directories(out);
+  std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
+                       "(validation/stand_light). Roots off, sky 8 x 16 patches.\n\n";
+  std::vector<Finding> findings;
+  findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, years, report));
+  findings.push_back(self_thinning(out, years, report));
+  std::ofstream(out / "stand_light.md") << report;
+  int failed = 0;
+  for (const Finding& f : findings) {
+    std::cout << (f.holds ? "holds: " : "FAILS: ") << f.text << "\n";
+    failed += !f.holds;
+  }
+  std::cout << "report: " << (out / "stand_light.md").string() << "\n";
+  return failed ? 1 : 0;
+}
