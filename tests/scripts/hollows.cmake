@@ -17,3 +17,17 @@ set_tests_properties(hollow.figures.render PROPERTIES
   TIMEOUT 600
   RESOURCE_LOCK xvfb
   LABELS "paraview")
+
+# render_hollows.py's stand mode (--stand FILE.vtm --focus X Y Z): a two-tree multiblock laid out like the
+# stand output (block `trunk`, point data `tree_id`), one tree standing in front of the other's hollow.
+add_test(NAME hollow.figures.render_stand_closeup
+         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
+                 ${PROJECT_SOURCE_DIR}/validation/hollows/stand_closeup_check.py
+                 ${PROJECT_BINARY_DIR}/validation/hollows/png/stand
+                 ${PROJECT_BINARY_DIR}/validation/hollows ${PROJECT_BINARY_DIR}/validation/hollows/png/stand)
+set_tests_properties(hollow.figures.render_stand_closeup PROPERTIES
+  FIXTURES_REQUIRED heliostand_hollow_figures
+  SKIP_RETURN_CODE 77
+  TIMEOUT 600
+  RESOURCE_LOCK xvfb
+  LABELS "paraview")

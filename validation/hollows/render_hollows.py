@@ -129,10 +129,11 @@ def wound_frame(data, focus=None):
 
     # The stem axis at the focus height: the centre of the tree's cross-section there (a bounding box of a
     # ring is centred on its axis, however unevenly the ring is sampled).
+    near = [p for p in (point(i) for i in range(n)
+                        if chosen_tree is None or tree_of(i) == chosen_tree) if abs(p[2] - centre[2]) < 0.3]
     ring = []
     for slab in (0.01, 0.03, 0.1, 0.3):
-        ring = [point(i) for i in range(n)
-                if abs(point(i)[2] - centre[2]) < slab and (chosen_tree is None or tree_of(i) == chosen_tree)]
+        ring = [p for p in near if abs(p[2] - centre[2]) < slab]
         if len(ring) >= 8:
             break
     outward = [1.0, 0.0]
