@@ -246,6 +246,17 @@ TEST(HollowMesh, InvalidSpecIsRejectedWithTheFieldNamed) {
   }
 }
 
+// Known failure (found while testing stacked hollows): on the slenderest wound the seed allows, placed by the
+// tangent plane, seed 11 leaves the polygons next to the bottom apex squeezed to almost nothing by the
+// across-the-wound clearance, and two of their tiny roll triangles touch (1 pair; seeds 1-3, 7, 12 and
+// azimuth 30° are clean). Run with --gtest_also_run_disabled_tests.
+TEST(HollowMesh, DISABLED_SlenderTangentPlaneWoundSeed11) {
+  HollowSpec spec = spec_for({0.04, 0.50, 0.01, 0.0, Placement::tangent_plane});
+  spec.azimuth_deg = 0.0;
+  spec.seed = 11;
+  expect_clean(build_hollow(spec, test_trunk()).mesh, "W 4 cm, H 50 cm, tangent plane, seed 11");
+}
+
 TEST(TrunkMesh, PlainStemIsManifoldAndWithinToleranceOfTheTaper) {
   const TrunkSurface trunk = test_trunk(0.5);
   const HollowMesh mesh = build_trunk_mesh(trunk, 0.0005);

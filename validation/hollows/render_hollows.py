@@ -75,7 +75,7 @@ def open_mesh(path):
     if path.endswith(".vtm"):
         if has_block(path, "trunk"):
             extract = ExtractBlock(Input=reader)
-            extract.Selectors = ["/Root/trunk"]
+            extract.Selectors = ["//trunk"]  # at any depth of the multiblock
             reader = extract
         return MergeBlocks(Input=reader)
     return reader
