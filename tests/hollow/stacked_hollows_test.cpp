@@ -12,6 +12,7 @@
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/mesh_checks.hpp"
 #include "hollow/stem_mesh_builder.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand::hollow {
 namespace {
@@ -162,6 +163,33 @@ INSTANTIATE_TEST_SUITE_P(SeedExtremes, HollowsAtTheirClosest,
                                            Pair{0.25, 0.10, 0.02, 0.04, Placement::tangent_plane, 1.5, 0.0},
                                            Pair{0.20, 0.30, 0.02, 0.02, Placement::tangent_plane, 0.42, 0.6},
                                            Pair{0.20, 0.25, 0.02, 0.02, Placement::cylindrical, 0.35, 0.5}));
+
+// Random stacks (fixed seed): 2-4 hollows of random size, placement and height on stems with and without a
+// collar; those validate_hollows accepts must build clean. (Run by hand with 25 stacks: all clean.)
+TEST(StackedHollows, RandomStacksThatValidateBuildClean) {
+  RandomStream rng(2024, {0x53544bULL /* "STK" */});
+  int built = 0;
+  for (int trial = 0; trial < 40 && built < 5; ++trial) {
+    const TrunkSurface trunk = TrunkSurface::seed001_taper(rng.uniform(20.0, 30.0), 10.0,
+                                                           {rng.uniform(0.0, 1.0) < 0.3 ? 0.6 : 0.0, 0.3});
+    std::vector<HollowSpec> hollows(2 + static_cast<int>(rng.uniform(0.0, 2.999)));
+    for (std::size_t i = 0; i < hollows.size(); ++i) {
+      HollowSpec& s = hollows[i];
+      s.width_m = rng.uniform(0.04, 0.34);
+      s.wound_height_m = rng.uniform(0.04, 0.44);
+      s.callus_radius_m = rng.uniform(0.01, s.width_m / 4.0);
+      s.bulge_m = rng.uniform(0.0, s.width_m / 4.0 - s.callus_radius_m);
+      s.height_m = rng.uniform(0.3, 6.3);
+      s.azimuth_deg = rng.uniform(0.0, 360.0);
+      s.placement = rng.uniform(0.0, 1.0) < 0.3 ? Placement::tangent_plane : Placement::cylindrical;
+      s.seed = 100 * trial + i;
+    }
+    if (!validate_hollows(hollows, trunk).empty()) continue;
+    ++built;
+    expect_clean_stem(hollows, trunk, fmt::format("random stack {} ({} hollows)", trial, hollows.size()));
+  }
+  EXPECT_EQ(built, 5);
+}
 
 TEST(StackedHollows, OverlappingHollowsAreRejectedWithTheGapTheyNeed) {
   const TrunkSurface trunk = test_trunk();
