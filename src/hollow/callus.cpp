@@ -23,6 +23,8 @@ constexpr double max_corner_jitter = radians(5.0);
 constexpr double crossing_margin = 0.5;
 // Neighbours checked on each side for plane crossings; beyond them the across-the-wound clearance applies.
 constexpr int plane_neighbours = 8;
+// Smallest corner radius (fraction of r) the crossing limits may leave.
+constexpr double min_squeezed_radius = 0.1;
 
 int wrap(int j, int n) { return ((j % n) + n) % n; }
 
@@ -174,8 +176,11 @@ Callus build_callus(const std::vector<glm::dvec2>& outline_xy, const StemChart& 
           ring.jitter[m] * (width * glm::dot(turned, t) * t + height * glm::dot(turned, up) * up);
       const double wanted = glm::length(wanted_offset);
       const glm::dvec3 d = wanted_offset / wanted;
-      const double allowed = limit_crossings ? std::min({wanted, across, plane_limit(j, d, v, axis),
-                                                         bend_limit(j, d, v, axis, arc, skip)})
+      // Squeezed towards a sharp apex, a corner keeps a floor of min_squeezed_radius · r: polygons shrunk to
+      // (almost) a point would give roll triangles whose distinct corners coincide and touch their neighbours.
+      const double floor = std::min(wanted, min_squeezed_radius * spec.callus_radius_m);
+      const double allowed = limit_crossings ? std::max(floor, std::min({wanted, across, plane_limit(j, d, v, axis),
+                                                                         bend_limit(j, d, v, axis, arc, skip)}))
                                              : wanted;
       ring.limit_scale = std::min(ring.limit_scale, allowed / wanted);
       ring.radius[m] = allowed;

@@ -71,7 +71,8 @@ std::vector<double> stem_rows(const HollowSpec& spec, const TrunkSurface& trunk,
   if (!band.reaches_tip()) extra.push_back(band.hi);
   std::vector<double> heights = stem_heights(trunk, spec.height_m - patch.down, spec.height_m + patch.up,
                                              spec.bark_segment_m, extra);
-  std::erase_if(heights, [&band](double h) { return h < band.lo || h > band.hi; });
+  // stem_heights() merges rows closer than 1e-6 m: the edge row may be a neighbour that close to the edge.
+  std::erase_if(heights, [&band](double h) { return h < band.lo - 1e-6 || h > band.hi + 1e-6; });
   const double keep_off = 1e-4 * (foot.y_max() - foot.y_min());
   std::vector<double> rows;
   for (double h : heights) {

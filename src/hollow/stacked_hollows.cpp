@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -50,13 +51,16 @@ std::vector<int> border_ring(const HollowMesh& mesh, double height) {
   for (const auto& t : mesh.triangles)
     for (int e = 0; e < 3; ++e) ++uses[{std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])}];
   std::vector<int> ring;
-  auto on_ring = [&](int v) { return std::abs(mesh.vertices[v].z - height) < 1e-7; };
+  // stem_heights() merges rows closer than 1e-6 m, so the edge row may sit that far from `height`; no other
+  // border comes near a band's edge (lips stay inside the patch, a quarter of the clearance away).
+  auto on_ring = [&](int v) { return std::abs(mesh.vertices[v].z - height) < 1e-5; };
   for (const auto& [edge, n] : uses)
     if (n == 1 && on_ring(edge.first) && on_ring(edge.second)) ring.push_back(edge.first), ring.push_back(edge.second);
   std::sort(ring.begin(), ring.end());
   ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
   std::sort(ring.begin(), ring.end(),
             [&](int a, int b) { return azimuth(mesh.vertices[a]) < azimuth(mesh.vertices[b]); });
+  if (ring.size() < 3) throw std::logic_error("hollow: a stem band has no open ring at its edge");
   return ring;
 }
 

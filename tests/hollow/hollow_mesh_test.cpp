@@ -246,6 +246,19 @@ TEST(HollowMesh, InvalidSpecIsRejectedWithTheFieldNamed) {
   }
 }
 
+// The slenderest wound the seed allows, placed by the tangent plane: the across-the-wound clearance squeezes
+// the polygons beside the bottom apex, and before the radius floor (callus.cpp, min_squeezed_radius) seeds 4,
+// 6, 9, 11, 14 and 16 left polygons of ~0.1 µm whose roll triangles touched (found while testing stacked
+// hollows; seeds 1-16 at azimuths 0° and 90° checked, the others were clean).
+TEST(HollowMesh, SlenderTangentPlaneWoundKeepsItsApexCleanForEverySeed) {
+  HollowSpec spec = spec_for({0.04, 0.50, 0.01, 0.0, Placement::tangent_plane});
+  spec.azimuth_deg = 0.0;
+  for (std::uint64_t seed : {4, 6, 9, 11, 14, 16}) {
+    spec.seed = seed;
+    expect_clean(build_hollow(spec, test_trunk()).mesh, fmt::format("W 4 cm, H 50 cm, tangent plane, seed {}", seed));
+  }
+}
+
 TEST(TrunkMesh, PlainStemIsManifoldAndWithinToleranceOfTheTaper) {
   const TrunkSurface trunk = test_trunk(0.5);
   const HollowMesh mesh = build_trunk_mesh(trunk, 0.0005);

@@ -11,6 +11,8 @@
 
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/mesh_checks.hpp"
+#include "hollow/stem_mesh_builder.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand::hollow {
 namespace {
@@ -62,9 +64,10 @@ void expect_clean_stem(const std::vector<HollowSpec>& hollows, const TrunkSurfac
     lips += static_cast<int>(alone.callus.rings.size());
     // Each hollow's roll is in the mesh, vertex for vertex as build_hollow() makes it alone (the callus
     // depends on the hollow only; the lift of its foot on the bark patch, which is the same in a band).
-    const double reach = spec.wound_height_m / 2.0 + 3.0 * spec.callus_radius_m + spec.bulge_m;
-    const auto expected = callus_between(alone.mesh, spec.height_m - reach, spec.height_m + reach);
-    const auto got = callus_between(mesh, spec.height_m - reach, spec.height_m + reach);
+    // Every hollow's callus lies in its own bark patch, and the patches are disjoint.
+    const detail::PatchBounds patch = detail::patch_bounds(spec, trunk);
+    const auto expected = callus_between(alone.mesh, patch.lo, patch.hi);
+    const auto got = callus_between(mesh, patch.lo, patch.hi);
     ASSERT_EQ(got.size(), expected.size()) << what << ": hollow at " << spec.height_m << " m";
     ASSERT_GT(got.size(), 100u);
     for (std::size_t i = 0; i < got.size(); ++i) ASSERT_LT(glm::length(got[i] - expected[i]), 1e-12) << what;
@@ -121,6 +124,71 @@ TEST(StackedHollows, TwoHollowsCloseTogetherAreJoinedAcrossANarrowGap) {
   // Default hollows (H = 0.2 m, r = 0.015 m) have patches ±0.2 m around their centres (max(H, 1.5 (H/2 + r)));
   // 0.42 m apart leaves exactly the 2 cm gap.
   expect_clean_stem({hollow_at(1.3, 0.0), hollow_at(1.7201, 180.0, 0.12, 0.20, 9)}, test_trunk(), "2 cm gap");
+}
+
+// Pairs as close as validate_hollows allows, for sizes at the seed's extremes, both placements and a flaring
+// collar (where the tangent-plane projection pushes the rim beyond ±H/2): the builder throws if a patch leaves
+// the band patch_bounds() promised, and the joined mesh must be clean.
+struct Pair {
+  double w, h, r, i;
+  Placement placement;
+  double height, flare;
+};
+
+class HollowsAtTheirClosest : public ::testing::TestWithParam<Pair> {};
+
+TEST_P(HollowsAtTheirClosest, StillMakeOneCleanMesh) {
+  const Pair p = GetParam();
+  const TrunkSurface trunk = test_trunk(p.flare);
+  HollowSpec low = hollow_at(p.height, 0.0, p.w, p.h, 11);
+  low.callus_radius_m = p.r;
+  low.bulge_m = p.i;
+  low.placement = p.placement;
+  HollowSpec high = low;
+  high.azimuth_deg = 90.0;
+  high.seed = 12;
+  const double up = detail::patch_bounds(low, trunk).hi - low.height_m;
+  high.height_m = low.height_m;
+  const double down = low.height_m - detail::patch_bounds(high, trunk).lo;  // same size, higher: same or less flare
+  high.height_m = low.height_m + up + down + min_hollow_gap_m + 1e-4;
+  expect_clean_stem({low, high}, trunk,
+                    fmt::format("W={} H={} r={} I={} {} at {} m, flare {}", p.w, p.h, p.r, p.i,
+                                p.placement == Placement::cylindrical ? "cylindrical" : "tangent plane", p.height, p.flare));
+}
+
+INSTANTIATE_TEST_SUITE_P(SeedExtremes, HollowsAtTheirClosest,
+                         ::testing::Values(Pair{0.04, 0.04, 0.01, 0.0, Placement::cylindrical, 1.5, 0.0},
+                                           Pair{0.30, 0.04, 0.075, 0.0, Placement::cylindrical, 1.5, 0.0},
+                                           Pair{0.04, 0.50, 0.01, 0.0, Placement::tangent_plane, 1.5, 0.0},
+                                           Pair{0.25, 0.10, 0.02, 0.04, Placement::tangent_plane, 1.5, 0.0},
+                                           Pair{0.20, 0.30, 0.02, 0.02, Placement::tangent_plane, 0.42, 0.6},
+                                           Pair{0.20, 0.25, 0.02, 0.02, Placement::cylindrical, 0.35, 0.5}));
+
+// Random stacks (fixed seed): 2-4 hollows of random size, placement and height on stems with and without a
+// collar; those validate_hollows accepts must build clean. (Run by hand with 25 stacks: all clean.)
+TEST(StackedHollows, RandomStacksThatValidateBuildClean) {
+  RandomStream rng(2024, {0x53544bULL /* "STK" */});
+  int built = 0;
+  for (int trial = 0; trial < 40 && built < 5; ++trial) {
+    const TrunkSurface trunk = TrunkSurface::seed001_taper(rng.uniform(20.0, 30.0), 10.0,
+                                                           {rng.uniform(0.0, 1.0) < 0.3 ? 0.6 : 0.0, 0.3});
+    std::vector<HollowSpec> hollows(2 + static_cast<int>(rng.uniform(0.0, 2.999)));
+    for (std::size_t i = 0; i < hollows.size(); ++i) {
+      HollowSpec& s = hollows[i];
+      s.width_m = rng.uniform(0.04, 0.34);
+      s.wound_height_m = rng.uniform(0.04, 0.44);
+      s.callus_radius_m = rng.uniform(0.01, s.width_m / 4.0);
+      s.bulge_m = rng.uniform(0.0, s.width_m / 4.0 - s.callus_radius_m);
+      s.height_m = rng.uniform(0.3, 6.3);
+      s.azimuth_deg = rng.uniform(0.0, 360.0);
+      s.placement = rng.uniform(0.0, 1.0) < 0.3 ? Placement::tangent_plane : Placement::cylindrical;
+      s.seed = 100 * trial + i;
+    }
+    if (!validate_hollows(hollows, trunk).empty()) continue;
+    ++built;
+    expect_clean_stem(hollows, trunk, fmt::format("random stack {} ({} hollows)", trial, hollows.size()));
+  }
+  EXPECT_EQ(built, 5);
 }
 
 TEST(StackedHollows, OverlappingHollowsAreRejectedWithTheGapTheyNeed) {
