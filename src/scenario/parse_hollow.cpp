@@ -84,22 +84,8 @@ void parse_one(const toml::table& table, const std::string& path, ScenarioDraft&
 }  // namespace
 
 void parse_hollow(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
-  if (!node) return;
-  const toml::array* hollows = node->as_array();
-  if (!hollows) {
-    problems.add(node->source(), "hollow",
-                 fmt::format("expected an array of tables ([[hollow]]), got {}", toml_type_phrase(*node)));
-    return;
-  }
-  for (std::size_t i = 0; i < hollows->size(); ++i) {
-    const std::string path = fmt::format("hollow[{}]", i + 1);
-    const toml::node& element = *hollows->get(i);
-    if (const toml::table* table = element.as_table()) {
-      parse_one(*table, path, draft, problems);
-    } else {
-      problems.add(element.source(), path, fmt::format("expected a table, got {}", toml_type_phrase(element)));
-    }
-  }
+  for_each_table_of_array(node, "hollow", problems,
+                          [&](const toml::table& table, const std::string& path) { parse_one(table, path, draft, problems); });
 }
 
 void attach_hollows_to_survey(ScenarioDraft& draft, ScenarioProblems& problems) {

@@ -59,19 +59,8 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
 }  // namespace
 
 void parse_root_pruning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
-  if (!node) return;
-  const toml::array* events = node->as_array();
-  if (!events) {
-    problems.add(node->source(), "root_pruning",
-                 fmt::format("expected an array of tables ([[root_pruning]]), got {}", toml_type_phrase(*node)));
-    return;
-  }
-  for (std::size_t i = 0; i < events->size(); ++i) {
-    const std::string path = fmt::format("root_pruning[{}]", i + 1);
-    const toml::node& element = *events->get(i);
-    if (const toml::table* table = element.as_table()) parse_event(*table, path, draft, problems);
-    else problems.add(element.source(), path, fmt::format("expected a table, got {}", toml_type_phrase(element)));
-  }
+  for_each_table_of_array(node, "root_pruning", problems,
+                          [&](const toml::table& table, const std::string& path) { parse_event(table, path, draft, problems); });
 }
 
 }  // namespace heliostand::scenario_detail

@@ -12,6 +12,23 @@ const toml::table* as_table(const toml::node* node, std::string_view key, Scenar
   return nullptr;
 }
 
+void for_each_table_of_array(const toml::node* node, std::string_view key, ScenarioProblems& problems,
+                             const std::function<void(const toml::table&, const std::string& path)>& parse) {
+  if (!node) return;
+  const toml::array* tables = node->as_array();
+  if (!tables) {
+    problems.add(node->source(), std::string(key),
+                 fmt::format("expected an array of tables ([[{}]]), got {}", key, toml_type_phrase(*node)));
+    return;
+  }
+  for (std::size_t i = 0; i < tables->size(); ++i) {
+    const std::string path = fmt::format("{}[{}]", key, i + 1);  // 1-based: the first [[key]] is [1]
+    const toml::node& element = *tables->get(i);
+    if (const toml::table* table = element.as_table()) parse(*table, path);
+    else problems.add(element.source(), path, fmt::format("expected a table, got {}", toml_type_phrase(element)));
+  }
+}
+
 void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
   if (!node) {
     problems.add(0, "stand", "required table missing (it names the survey, the stand age and the plot)");

@@ -2,6 +2,7 @@
 // One parse function per top-level scenario table. Each gets the table's node (null when the file has
 // none, so it can report missing required keys), fills its part of the draft and reports problems.
 // A new table (roots, hollows, ...) is a new function here and one line in scenario_table_parsers().
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -78,5 +79,9 @@ std::span<const TableParserEntry> scenario_table_parsers();
 
 // The table at `node`, or null after reporting that `key` should be a table.
 const toml::table* as_table(const toml::node* node, std::string_view key, ScenarioProblems& problems);
+
+// An array of tables ([[key]]): `parse` for each table with its path "key[i]" (1-based); anything else reported.
+void for_each_table_of_array(const toml::node* node, std::string_view key, ScenarioProblems& problems,
+                             const std::function<void(const toml::table&, const std::string& path)>& parse);
 
 }  // namespace heliostand::scenario_detail

@@ -16,14 +16,7 @@ using testing::input_problems;
 using testing::minimal_stand;
 using testing::write_scenario;
 
-std::vector<std::string> problems_of(const std::string& name, const std::string& toml) {
-  const auto file = write_scenario(name, toml);
-  auto lines = input_problems([&] { load_scenario(file); });
-  const std::string folder = file.parent_path().string() + "/";
-  for (auto& line : lines)
-    for (auto at = line.find(folder); at != std::string::npos; at = line.find(folder)) line.erase(at, folder.size());
-  return lines;
-}
+using testing::scenario_problems;
 
 TEST(ScenarioHollows, HollowJoinsItsSurveyRecord) {
   const auto file = write_scenario("hollow_good", minimal_stand +
@@ -51,7 +44,7 @@ TEST(ScenarioHollows, HollowJoinsItsSurveyRecord) {
 
 TEST(ScenarioHollows, BadHollowsNameTheTreeAndTheKey) {
   // Tree "2" is 10 m tall, stem radius ≈ 8.6 cm at 1.5 m: 0.6 m is too wide, 9.7 m above 95 % of its height.
-  EXPECT_THAT(problems_of("hollow_bad", minimal_stand +
+  EXPECT_THAT(scenario_problems("hollow_bad", minimal_stand +
                                             "[[hollow]]\n"       // 11
                                             "tree = \"9\"\n"     // 12
                                             "height_m = 1.5\n"
@@ -84,7 +77,7 @@ const std::string habitat_tree_3 =
     "azimuth_deg = 90\n";
 
 TEST(ScenarioHollows, MarkingListNamingAProtectedHabitatTreeIsAnError) {
-  EXPECT_THAT(problems_of("hollow_marked", minimal_stand + habitat_tree_3 +
+  EXPECT_THAT(scenario_problems("hollow_marked", minimal_stand + habitat_tree_3 +
                                                "[[thinning]]\n"
                                                "age = 25\n"
                                                "method = \"ids\"\n"

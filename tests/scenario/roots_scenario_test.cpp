@@ -14,14 +14,7 @@ using testing::input_problems;
 using testing::minimal_stand;
 using testing::write_scenario;
 
-std::vector<std::string> problems_of(const std::string& name, const std::string& toml) {
-  const auto file = write_scenario(name, toml);
-  auto lines = input_problems([&] { load_scenario(file); });
-  const std::string folder = file.parent_path().string() + "/";
-  for (auto& line : lines)
-    for (auto at = line.find(folder); at != std::string::npos; at = line.find(folder)) line.erase(at, folder.size());
-  return lines;
-}
+using testing::scenario_problems;
 
 TEST(RootsScenario, DefaultsWhenNoTables) {
   const Scenario s = load_scenario(write_scenario("roots_defaults", minimal_stand));
@@ -78,7 +71,7 @@ TEST(RootsScenario, EveryTableReachesTheSettings) {
 }
 
 TEST(RootsScenario, BadValuesNameLineAndKey) {
-  std::vector<std::string> got = problems_of("roots_bad", minimal_stand +
+  std::vector<std::string> got = scenario_problems("roots_bad", minimal_stand +
       "[roots]\nsolver = \"gpu\"\n"                                   // 11, 12
       "[roots.ezomatsu]\n"                                            // 13
       "[roots.todomatsu.lateral]\nalpha = 0.9\nradius_m = -1\n"       // 14, 15, 16

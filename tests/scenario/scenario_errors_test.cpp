@@ -16,17 +16,7 @@ using ::testing::ElementsAre;
 
 const std::filesystem::path stands = std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands";
 
-// Problems of loading `toml` (with the four-tree survey), the scenario's path shortened to "s.toml".
-std::vector<std::string> problems_of(const std::string& name, const std::string& toml,
-                                     const std::string& survey = testing::four_tree_survey) {
-  const auto file = write_scenario(name, toml, survey);
-  auto lines = input_problems([&] { load_scenario(file); });
-  const std::string folder = file.parent_path().string() + "/";
-  for (auto& line : lines) {
-    for (auto at = line.find(folder); at != std::string::npos; at = line.find(folder)) line.erase(at, folder.size());
-  }
-  return lines;
-}
+using testing::scenario_problems;
 
 TEST(ScenarioErrors, UnreadableFileAndSyntaxError) {
   EXPECT_THAT(input_problems([] { load_scenario("/nonexistent/heliostand/scenario.toml"); }),
@@ -38,11 +28,11 @@ TEST(ScenarioErrors, UnreadableFileAndSyntaxError) {
 }
 
 TEST(ScenarioErrors, MissingTablesAndRequiredKeys) {
-  EXPECT_THAT(problems_of("missing_tables", "# nothing\n"),
+  EXPECT_THAT(scenario_problems("missing_tables", "# nothing\n"),
               ElementsAre("scenario.toml: key 'stand': required table missing (it names the survey, the stand age and "
                           "the plot)",
                           "scenario.toml: key 'run': required table missing (it gives at least the years to simulate)"));
-  EXPECT_THAT(problems_of("missing_keys", "[stand]\nsurvey = \"survey.csv\"\n[run]\nseed = 3\n"),
+  EXPECT_THAT(scenario_problems("missing_keys", "[stand]\nsurvey = \"survey.csv\"\n[run]\nseed = 3\n"),
               ElementsAre("scenario.toml:1: key 'stand.age_at_survey': required key missing",
                           "scenario.toml:1: key 'stand.x_min': required key missing",
                           "scenario.toml:1: key 'stand.y_min': required key missing",
@@ -52,7 +42,7 @@ TEST(ScenarioErrors, MissingTablesAndRequiredKeys) {
 }
 
 TEST(ScenarioErrors, UnknownKeysAndTables) {
-  EXPECT_THAT(problems_of("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
+  EXPECT_THAT(scenario_problems("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
               ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
                           "thinning, roots, soil, coupling, root_pruning, hollow)",
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: device, output_interval, "
@@ -63,7 +53,7 @@ TEST(ScenarioErrors, UnknownKeysAndTables) {
 }
 
 TEST(ScenarioErrors, WrongTypes) {
-  EXPECT_THAT(problems_of("types", minimal_stand +
+  EXPECT_THAT(scenario_problems("types", minimal_stand +
                                        "seed = 1.5\n"
                                        "device = 1\n"
                                        "[light]\n"
@@ -82,7 +72,7 @@ TEST(ScenarioErrors, WrongTypes) {
 TEST(ScenarioErrors, OutOfRangeValues) {
   std::string toml = minimal_stand;
   toml.replace(toml.find("years = 10"), 10, "years = -5");
-  EXPECT_THAT(problems_of("range", toml +
+  EXPECT_THAT(scenario_problems("range", toml +
                                        "output_interval = 0\n"
                                        "[species.todomatsu]\n"
                                        "height_m = 1.0\n"
@@ -103,7 +93,7 @@ TEST(ScenarioErrors, OutOfRangeValues) {
 }
 
 TEST(ScenarioErrors, BadPlotBoundsAndSurveyPath) {
-  EXPECT_THAT(problems_of("bounds", "[stand]\nsurvey = \"nothere.csv\"\nage_at_survey = 0\nx_min = 5\ny_min = 0\n"
+  EXPECT_THAT(scenario_problems("bounds", "[stand]\nsurvey = \"nothere.csv\"\nage_at_survey = 0\nx_min = 5\ny_min = 0\n"
                                     "x_max = 5\ny_max = -1\n[run]\nyears = 1\n"),
               // The path is shown as the scenario's folder (stripped here) joined with the key's value.
               ElementsAre("scenario.toml:2: key 'stand.survey': survey file \"nothere.csv\" not found (paths are "
@@ -116,7 +106,7 @@ TEST(ScenarioErrors, BadPlotBoundsAndSurveyPath) {
 TEST(ScenarioErrors, SpeciesConsistencyAndDefaultSpecies) {
   std::string toml = minimal_stand;
   toml.insert(toml.find("[run]"), "default_species = \"ezomatsu\"\n");  // line 9
-  EXPECT_THAT(problems_of("species", toml +
+  EXPECT_THAT(scenario_problems("species", toml +
                                          "[species.todomatsu]\n"          // 12
                                          "whorl_b3 = -10\n"
                                          "leaf_ball_min_radius_m = 0.5\n"
@@ -130,7 +120,7 @@ TEST(ScenarioErrors, SpeciesConsistencyAndDefaultSpecies) {
 }
 
 TEST(ScenarioErrors, ThinningStructure) {
-  EXPECT_THAT(problems_of("thinning_structure", minimal_stand +
+  EXPECT_THAT(scenario_problems("thinning_structure", minimal_stand +
                                                     "[[thinning]]\n"                                // 11
                                                     "method = \"random\"\n"
                                                     "[[thinning]]\n"                                // 13
@@ -163,7 +153,7 @@ TEST(ScenarioErrors, ThinningStructure) {
 
 TEST(ScenarioErrors, ThinningAgainstTheRunAndTheSurvey) {
   // Four trees on 0.01 ha = 400 stems/ha. Survey at 20, run to 30.
-  EXPECT_THAT(problems_of("thinning_checks", minimal_stand +
+  EXPECT_THAT(scenario_problems("thinning_checks", minimal_stand +
                                                  "[[thinning]]\nage = 19\nmethod = \"ids\"\nids = [\"1\"]\n"    // 11
                                                  "[[thinning]]\nage = 31\nmethod = \"ids\"\nids = [\"2\"]\n"    // 15
                                                  "[[thinning]]\nage = 22\nmethod = \"ids\"\nids = [\"9\", \"1\"]\n"  // 19
@@ -188,7 +178,7 @@ TEST(ScenarioErrors, ThinningAgainstTheRunAndTheSurvey) {
 TEST(ScenarioErrors, AStemTargetMustFallBelowTheEarlierOne) {
   // 400 stems/ha at the survey; thinned to 300 at age 22, a later target of 350 cannot be a thinning.
   // A basal-area event in between does not change what is known about stems.
-  EXPECT_THAT(problems_of("falling_targets", minimal_stand +
+  EXPECT_THAT(scenario_problems("falling_targets", minimal_stand +
                                                  "[[thinning]]\nage = 25\nmethod = \"from_below\"\n"   // 11
                                                  "target_stems_per_ha = 350\n"                              // 14
                                                  "[[thinning]]\nage = 22\nmethod = \"from_below\"\n"   // 15
@@ -203,7 +193,7 @@ TEST(ScenarioErrors, AStemTargetMustFallBelowTheEarlierOne) {
 TEST(ScenarioErrors, SurveyProblemsAreListedWithTheScenarios) {
   // Unknown species in the survey, plus a scenario problem: both reported, each with its own file and kind.
   const std::string survey = "x,y,h,species\n1,1,9,todomatsu\n12,2,9,karamatsu\n";
-  EXPECT_THAT(problems_of("survey_and_scenario", minimal_stand + "seed = -2\n", survey),
+  EXPECT_THAT(scenario_problems("survey_and_scenario", minimal_stand + "seed = -2\n", survey),
               ElementsAre("scenario.toml:11: key 'run.seed': expected an integer >= 0, got -2",
                           "survey.csv:3: column 'x': 12 is outside the plot (x from 0 to 10 m)",
                           "survey.csv:3: column 'species': unknown species \"karamatsu\" (the scenario defines: "

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string>
 
+#include "scenario/scenario.hpp"
 #include "survey/survey_test_files.hpp"
 
 namespace heliostand::testing {
@@ -31,6 +32,18 @@ inline std::filesystem::path write_scenario(const std::string& name, const std::
                                             const std::string& survey = four_tree_survey) {
   write_test_file(name + "/survey.csv", survey);
   return write_test_file(name + "/scenario.toml", toml);
+}
+
+// The problems of loading `toml` (with `survey`) as formatted lines, the folder stripped from the paths
+// ("scenario.toml:12: key 'a.b': reason"); a test failure if loading succeeds.
+inline std::vector<std::string> scenario_problems(const std::string& name, const std::string& toml,
+                                                  const std::string& survey = four_tree_survey) {
+  const auto file = write_scenario(name, toml, survey);
+  auto lines = input_problems([&] { load_scenario(file); });
+  const std::string folder = file.parent_path().string() + "/";
+  for (auto& line : lines)
+    for (auto at = line.find(folder); at != std::string::npos; at = line.find(folder)) line.erase(at, folder.size());
+  return lines;
 }
 
 }  // namespace heliostand::testing
