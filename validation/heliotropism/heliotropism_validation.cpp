@@ -1,6 +1,8 @@
 // Seed 000 (Kanamaru et al. 1991) reproduced: parameter sweeps of the simple dichotomy model and the bud
 // sphere, averaged over seeds, with the paper's findings asserted (Figs. 5, 10-14). Writes
-// heliotropism_metrics.md to the output folder and exits 1 when a finding does not hold.
+// heliotropism_metrics.md to the output folder and exits 1 when a finding does not hold. Each sweep's trees of the
+// first seed go to OUT_DIR/trees (one .vtp of branches and one of tips per tree, listed in trees/index.csv) for
+// render_sweeps.py, which draws them side by side like the paper's figure panels.
 //   heliotropism_validation validate OUT_DIR [--full]    (reduced sizes by default, see docs/model.md)
 //   heliotropism_validation run SCENARIO.toml OUT_DIR    (one stands/kanamaru-* scenario)
 #include <chrono>
@@ -74,8 +76,8 @@ CrownMetrics mean_of(const std::vector<CrownMetrics>& all) {
   return m;
 }
 
-CrownMetrics grow_dichotomy(const KanamaruParameters& p, std::uint64_t seed, std::vector<int>* survivors = nullptr,
-                            const std::vector<int>* prescribed = nullptr) {
+DichotomyTree grow_dichotomy(const KanamaruParameters& p, std::uint64_t seed, std::vector<int>* survivors = nullptr,
+                             const std::vector<int>* prescribed = nullptr) {
   DichotomyTree tree({root_branch({0.0, 0.0, 0.0}, 15.0)}, p.branching_angle_deg, seed);
   KanamaruGrowth growth(p, seed);
   if (prescribed) growth.random_survivors = *prescribed;
@@ -84,8 +86,35 @@ CrownMetrics grow_dichotomy(const KanamaruParameters& p, std::uint64_t seed, std
     survivors->assign(1, 0);
     for (const auto& r : growth.history()) survivors->push_back(r.survived);
   }
-  return measure_crown(crown_tips(tree));
+  return tree;
 }
+
+// One tree per sweep value, for the pictures: OUT/trees/NAME.vtp (branches) and NAME_tips.vtp (leaf-ball
+// centres), listed in OUT/trees/index.csv (sweep, title, panel label, files) in panel order.
+class Gallery {
+ public:
+  explicit Gallery(std::filesystem::path out) : dir_(std::move(out) / "trees") {
+    std::filesystem::create_directories(dir_);
+  }
+  // Writes the tree and returns its file stem (a tree shared by several sweeps is written once).
+  std::string write(const DichotomyTree& tree, double leaf_ball_radius) {
+    const std::string stem = fmt::format("tree_{:02d}", written_++);
+    write_crown_vtp(tree, leaf_ball_radius, dir_ / (stem + ".vtp"));
+    write_tips_vtp(tree, dir_ / (stem + "_tips.vtp"));
+    return stem;
+  }
+  void show(const std::string& sweep, const std::string& title, const std::string& label, const std::string& stem) {
+    index_ << fmt::format("{},\"{}\",\"{}\",{}.vtp,{}_tips.vtp\n", sweep, title, label, stem, stem);
+  }
+  void write_index() const {
+    std::ofstream(dir_ / "index.csv") << "sweep,title,label,branches,tips\n" << index_.str();
+  }
+
+ private:
+  std::filesystem::path dir_;
+  int written_ = 0;
+  std::ostringstream index_;
+};
 
 // Sweeps share their base case: remember each parameter set's result.
 std::string key_of(const KanamaruParameters& p) {
@@ -94,12 +123,23 @@ std::string key_of(const KanamaruParameters& p) {
                      static_cast<int>(p.pruning));
 }
 
-CrownMetrics sweep_point(const KanamaruParameters& p, const Size& size) {
-  static std::map<std::string, CrownMetrics> done;
+struct SweepPoint {
+  CrownMetrics mean;       // over the seeds
+  std::string first_tree;  // the first seed's tree in the gallery
+};
+
+SweepPoint sweep_point(const KanamaruParameters& p, const Size& size, Gallery& gallery) {
+  static std::map<std::string, SweepPoint> done;
   if (auto found = done.find(key_of(p)); found != done.end()) return found->second;
   std::vector<CrownMetrics> all;
-  for (int s = 1; s <= size.seeds; ++s) all.push_back(grow_dichotomy(p, static_cast<std::uint64_t>(s)));
-  return done[key_of(p)] = mean_of(all);
+  SweepPoint point;
+  for (int s = 1; s <= size.seeds; ++s) {
+    const DichotomyTree tree = grow_dichotomy(p, static_cast<std::uint64_t>(s));
+    all.push_back(measure_crown(crown_tips(tree)));
+    if (s == 1) point.first_tree = gallery.write(tree, p.leaf_ball_radius);
+  }
+  point.mean = mean_of(all);
+  return done[key_of(p)] = point;
 }
 
 struct Report {
@@ -131,17 +171,24 @@ struct Report {
   }
 };
 
-void figure10(const Size& size, Report& report) {
+void figure10(const Size& size, Report& report, Gallery& gallery) {
   // (a) random vs (b) light pruning, both without heliotropism, same survivors per generation.
   KanamaruParameters light = base(size);
   light.heliotropism = 0.0;
   KanamaruParameters random = light;
   random.pruning = Pruning::random;
   std::vector<CrownMetrics> by_light, by_chance;
+  const std::string title = "Fig. 10: light pruning and heliotropism";
   for (int s = 1; s <= size.seeds; ++s) {
     std::vector<int> survivors;
-    by_light.push_back(grow_dichotomy(light, s, &survivors));
-    by_chance.push_back(grow_dichotomy(random, s, nullptr, &survivors));
+    const DichotomyTree lit = grow_dichotomy(light, s, &survivors);
+    const DichotomyTree chance = grow_dichotomy(random, s, nullptr, &survivors);
+    by_light.push_back(measure_crown(crown_tips(lit)));
+    by_chance.push_back(measure_crown(crown_tips(chance)));
+    if (s == 1) {
+      gallery.show("fig10", title, "(a) random pruning, I = 0", gallery.write(chance, random.leaf_ball_radius));
+      gallery.show("fig10", title, "(b) light pruning, I = 0", gallery.write(lit, light.leaf_ball_radius));
+    }
   }
   const CrownMetrics a = mean_of(by_chance), b = mean_of(by_light);
   report.row("10(a)", "random pruning, I = 0", a);
@@ -151,11 +198,15 @@ void figure10(const Size& size, Report& report) {
                            "survivors (top view: tips within 2R {:.2f} vs {:.2f}, > 15 % fewer; quadrat CV "
                            "{:.3f} < {:.3f})", b.crowding, a.crowding, b.quadrat_cv, a.quadrat_cv));
   std::vector<CrownMetrics> by_strength;
+  char panel = 'c';
   for (double strength : {0.0, 0.2, 0.4}) {
     KanamaruParameters p = base(size);
     p.generations = size.droop_generations;
     p.heliotropism = strength;
-    by_strength.push_back(sweep_point(p, size));
+    const SweepPoint point = sweep_point(p, size, gallery);
+    by_strength.push_back(point.mean);
+    gallery.show("fig10", title, fmt::format("({}) I = {:.1f}, G = {}", panel++, strength, size.droop_generations),
+                 point.first_tree);
     report.row("10(c-e)", fmt::format("I = {:.1f}, G = {}", strength, size.droop_generations), by_strength.back());
   }
   report.check(by_strength[0].tips < by_strength[1].tips && by_strength[1].tips < by_strength[2].tips,
@@ -168,7 +219,8 @@ void figure10(const Size& size, Report& report) {
                            by_strength[2].downward, by_strength[0].drooping, by_strength[2].drooping));
 }
 
-void figure11(const Size& size, Report& report) {
+void figure11(const Size& size, Report& report, Gallery& gallery) {
+  const std::string title = "Fig. 11: crown regeneration (left tree cut)";
   std::vector<CrownMetrics> kept, cut;
   for (int s = 1; s <= size.seeds; ++s) {
     for (bool remove : {false, true}) {
@@ -177,8 +229,15 @@ void figure11(const Size& size, Report& report) {
                          p.branching_angle_deg, s);
       KanamaruGrowth growth(p, s);
       growth.grow(tree, size.regrow_cut);
+      if (s == 1 && !remove)
+        gallery.show("fig11", title, fmt::format("(a) generation {}", size.regrow_cut), gallery.write(tree, p.leaf_ball_radius));
       if (remove) tree.remove_group(0);
       growth.grow(tree, size.regrow_end);
+      if (s == 1)
+        gallery.show("fig11", title,
+                     remove ? fmt::format("(c) left cut after {}, generation {}", size.regrow_cut, size.regrow_end)
+                            : fmt::format("(b) generation {}", size.regrow_end),
+                     gallery.write(tree, p.leaf_ball_radius));
       CrownMetrics right = measure_crown(crown_tips(tree, 1));
       right.min_x -= 3.0;  // relative to the right tree's stem
       right.max_x -= 3.0;
@@ -193,12 +252,15 @@ void figure11(const Size& size, Report& report) {
                            "from its stem, by more than one branch length)", c.min_x, k.min_x));
 }
 
-void figure12(const Size& size, Report& report) {
+void figure12(const Size& size, Report& report, Gallery& gallery) {
   std::vector<CrownMetrics> m;
+  char panel = 'a';
   for (double radius : {2.0, 1.5, 1.0}) {
     KanamaruParameters p = base(size);
     p.leaf_ball_radius = radius;
-    m.push_back(sweep_point(p, size));
+    const SweepPoint point = sweep_point(p, size, gallery);
+    m.push_back(point.mean);
+    gallery.show("fig12", "Fig. 12: leaf-ball radius R", fmt::format("({}) R = {:g}", panel++, radius), point.first_tree);
     report.row("12", fmt::format("R = {:g}", radius), m.back());
   }
   report.check(m[2].tips > m[0].tips,
@@ -214,10 +276,13 @@ void figure12(const Size& size, Report& report) {
   else report.deviation(text);
 }
 
-void figure13(const Size& size, Report& report) {
+void figure13(const Size& size, Report& report, Gallery& gallery) {
   KanamaruParameters high = base(size), low = base(size);
   low.death.standard = 0.5;
-  const CrownMetrics a = sweep_point(high, size), b = sweep_point(low, size);
+  const SweepPoint at_high = sweep_point(high, size, gallery), at_low = sweep_point(low, size, gallery);
+  gallery.show("fig13", "Fig. 13: standard death threshold D0", "(a) D0 = 0.6", at_high.first_tree);
+  gallery.show("fig13", "Fig. 13: standard death threshold D0", "(b) D0 = 0.5", at_low.first_tree);
+  const CrownMetrics a = at_high.mean, b = at_low.mean;
   report.row("13", "D0 = 0.6", a);
   report.row("13", "D0 = 0.5", b);
   report.check(b.tips > a.tips, fmt::format("Fig. 13: smaller D0 keeps more branches ({} > {})", b.tips, a.tips));
@@ -226,12 +291,15 @@ void figure13(const Size& size, Report& report) {
                            "{:.2f} < {:.2f})", b.width, a.width, b.bottom, a.bottom));
 }
 
-void figure14(const Size& size, Report& report) {
+void figure14(const Size& size, Report& report, Gallery& gallery) {
   std::vector<CrownMetrics> m;
+  char panel = 'a';
   for (double ratio : {1.0, 1.5, 3.0}) {
     KanamaruParameters p = base(size);
     p.light.intensity_ratio = ratio;
-    m.push_back(sweep_point(p, size));
+    const SweepPoint point = sweep_point(p, size, gallery);
+    m.push_back(point.mean);
+    gallery.show("fig14", "Fig. 14: light intensity ratio L", fmt::format("({}) L = {:g}", panel++, ratio), point.first_tree);
     report.row("14", fmt::format("L = {:g}", ratio), m.back());
   }
   report.check(m[0].downward > m[1].downward,
@@ -241,7 +309,7 @@ void figure14(const Size& size, Report& report) {
                            "{:.2f} > {:.2f})", m[2].width, m[1].width, m[2].top / m[2].width, m[1].top / m[1].width));
 }
 
-void figure5(const Size& size, Report& report) {
+void figure5(const Size& size, Report& report, Gallery& gallery) {
   std::vector<CrownMetrics> without, with;
   for (int s = 1; s <= size.seeds; ++s)
     for (double strength : {0.0, 0.4}) {
@@ -252,6 +320,9 @@ void figure5(const Size& size, Report& report) {
       KanamaruGrowth growth(p, s);
       growth.grow(tree, p.generations);
       (strength > 0 ? with : without).push_back(measure_crown(crown_tips(tree)));
+      if (s == 1)
+        gallery.show("fig05", "Fig. 5: crown formation from a bud sphere",
+                     fmt::format("({}) I = {:g}", strength > 0 ? 'b' : 'a', strength), gallery.write(tree, p.leaf_ball_radius));
     }
   const CrownMetrics a = mean_of(without), b = mean_of(with);
   report.row("5", "bud sphere, I = 0", a);
@@ -265,12 +336,13 @@ int validate(const std::string& out, bool full) {
   Size size;
   if (full) size = {5, 40, 40, 16, 25, 60, 50, 20};
   Report report;
+  Gallery gallery(out);
   for (auto figure : {figure10, figure11, figure12, figure13, figure14, figure5}) {
     const auto start = std::chrono::steady_clock::now();
-    figure(size, report);
+    figure(size, report, gallery);
     std::cerr << "  (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
   }
-  std::filesystem::create_directories(out);
+  gallery.write_index();
   std::ofstream md(std::filesystem::path(out) / "heliotropism_metrics.md");
   md << "# Seed 000 findings (heliotropism validation)\n\n"
      << fmt::format("Sizes: {} seeds, {} generations (Table 1: 40; Fig. 10's I sweep {}), sky {} x {}, Fig. 11 cut after {} grown to {}, "
