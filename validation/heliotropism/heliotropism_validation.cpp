@@ -38,6 +38,11 @@ struct Size {
   int regrow_cut = 12, regrow_end = 24;  // Fig. 11: 25 and 60
   int bud_generations = 20;  // Fig. 5: 50
   int bud_latest = 8;        // Fig. 5: 20
+  // Fig. 12's "same crown outline" is a claim about grown crowns: a crown with smaller leaf balls comes through
+  // the early die-back (when the young crown outgrows R) with a lead of about 5 branch lengths in width, which
+  // is 16-22 % of a 20-generation crown but about 11 % at 32 and 9 % at 40 (docs/model.md).
+  int outline_generations = 32;  // Table 1: 40
+  int outline_seeds = 4;
 };
 
 KanamaruParameters base(const Size& size) {
@@ -128,18 +133,20 @@ struct SweepPoint {
   std::string first_tree;  // the first seed's tree in the gallery
 };
 
-SweepPoint sweep_point(const KanamaruParameters& p, const Size& size, Gallery& gallery) {
+// Mean over seeds 1..seeds; the first seed's tree goes to the gallery, if given.
+SweepPoint sweep_point(const KanamaruParameters& p, int seeds, Gallery* gallery) {
   static std::map<std::string, SweepPoint> done;
-  if (auto found = done.find(key_of(p)); found != done.end()) return found->second;
+  const std::string key = fmt::format("{}|{}|{}", key_of(p), seeds, gallery != nullptr);
+  if (auto found = done.find(key); found != done.end()) return found->second;
   std::vector<CrownMetrics> all;
   SweepPoint point;
-  for (int s = 1; s <= size.seeds; ++s) {
+  for (int s = 1; s <= seeds; ++s) {
     const DichotomyTree tree = grow_dichotomy(p, static_cast<std::uint64_t>(s));
     all.push_back(measure_crown(crown_tips(tree)));
-    if (s == 1) point.first_tree = gallery.write(tree, p.leaf_ball_radius);
+    if (s == 1 && gallery) point.first_tree = gallery->write(tree, p.leaf_ball_radius);
   }
   point.mean = mean_of(all);
-  return done[key_of(p)] = point;
+  return done[key] = point;
 }
 
 struct Report {
@@ -158,11 +165,6 @@ struct Report {
     std::cerr << figure << " " << label << ": tips " << m.tips << " width " << m.width << " height " << m.height
               << " top " << m.top << " bottom " << m.bottom << " droop " << m.drooping << " down " << m.downward << " nn " << m.nearest_neighbour << " cv "
               << m.roundness_cv << " qcv " << m.quadrat_cv << " crowd " << m.crowding << " min_x " << m.min_x << "\n";
-  }
-  // A finding our model does not reproduce at these sizes: reported with its numbers, not failed.
-  void deviation(const std::string& finding) {
-    findings << "- DEVIATION — " << finding << "\n";
-    std::cerr << "DEVIATION " << finding << "\n";
   }
   void check(bool ok, const std::string& finding) {
     findings << "- " << (ok ? "PASS" : "**FAIL**") << " — " << finding << "\n";
@@ -203,7 +205,7 @@ void figure10(const Size& size, Report& report, Gallery& gallery) {
     KanamaruParameters p = base(size);
     p.generations = size.droop_generations;
     p.heliotropism = strength;
-    const SweepPoint point = sweep_point(p, size, gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
     by_strength.push_back(point.mean);
     gallery.show("fig10", title, fmt::format("({}) I = {:.1f}, G = {}", panel++, strength, size.droop_generations),
                  point.first_tree);
@@ -258,28 +260,36 @@ void figure12(const Size& size, Report& report, Gallery& gallery) {
   for (double radius : {2.0, 1.5, 1.0}) {
     KanamaruParameters p = base(size);
     p.leaf_ball_radius = radius;
-    const SweepPoint point = sweep_point(p, size, gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
     m.push_back(point.mean);
     gallery.show("fig12", "Fig. 12: leaf-ball radius R", fmt::format("({}) R = {:g}", panel++, radius), point.first_tree);
     report.row("12", fmt::format("R = {:g}", radius), m.back());
   }
   report.check(m[2].tips > m[0].tips,
                fmt::format("Fig. 12: smaller R keeps more branches (R = 1: {} > R = 2: {})", m[2].tips, m[0].tips));
+  // The outline on grown crowns (Size::outline_generations, more seeds: the R = 2 crowns vary most).
+  std::vector<CrownMetrics> grown;
+  for (double radius : {2.0, 1.5}) {
+    KanamaruParameters p = base(size);
+    p.generations = size.outline_generations;
+    p.leaf_ball_radius = radius;
+    grown.push_back(sweep_point(p, size.outline_seeds, nullptr).mean);
+    report.row("12", fmt::format("R = {:g}, G = {}, {} seeds", radius, size.outline_generations, size.outline_seeds),
+               grown.back());
+  }
   auto outline = [](const CrownMetrics& c) { return c.width / c.top; };  // crown width / tree height
-  const double change = outline(m[1]) / outline(m[0]) - 1.0;
-  const std::string text = fmt::format("Fig. 12: crown outline (width / tree height) within 15 % between R = 1.5 and "
-                                       "R = 2 ({:.3f} vs {:.3f}, {:+.0f} %; R = 1: {:.3f})", outline(m[1]),
-                                       outline(m[0]), 100.0 * change, outline(m[2]));
-  // Smaller balls let the young crown spread wider before it is self-shaded; at G = 40 the difference shrinks
-  // (docs/model.md). Asserted at full size only.
-  if (size.generations >= 40) report.check(std::abs(change) < 0.15, text);
-  else report.deviation(text);
+  const double change = outline(grown[1]) / outline(grown[0]) - 1.0;
+  report.check(std::abs(change) < 0.15,
+               fmt::format("Fig. 12: crown outline (width / tree height) within 15 % between R = 1.5 and R = 2 at "
+                           "G = {} ({:.3f} vs {:.3f}, {:+.0f} %; at G = {}: {:.3f} vs {:.3f}, R = 1: {:.3f})",
+                           size.outline_generations, outline(grown[1]), outline(grown[0]), 100.0 * change,
+                           size.generations, outline(m[1]), outline(m[0]), outline(m[2])));
 }
 
 void figure13(const Size& size, Report& report, Gallery& gallery) {
   KanamaruParameters high = base(size), low = base(size);
   low.death.standard = 0.5;
-  const SweepPoint at_high = sweep_point(high, size, gallery), at_low = sweep_point(low, size, gallery);
+  const SweepPoint at_high = sweep_point(high, size.seeds, &gallery), at_low = sweep_point(low, size.seeds, &gallery);
   gallery.show("fig13", "Fig. 13: standard death threshold D0", "(a) D0 = 0.6", at_high.first_tree);
   gallery.show("fig13", "Fig. 13: standard death threshold D0", "(b) D0 = 0.5", at_low.first_tree);
   const CrownMetrics a = at_high.mean, b = at_low.mean;
@@ -297,7 +307,7 @@ void figure14(const Size& size, Report& report, Gallery& gallery) {
   for (double ratio : {1.0, 1.5, 3.0}) {
     KanamaruParameters p = base(size);
     p.light.intensity_ratio = ratio;
-    const SweepPoint point = sweep_point(p, size, gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
     m.push_back(point.mean);
     gallery.show("fig14", "Fig. 14: light intensity ratio L", fmt::format("({}) L = {:g}", panel++, ratio), point.first_tree);
     report.row("14", fmt::format("L = {:g}", ratio), m.back());
@@ -334,7 +344,7 @@ void figure5(const Size& size, Report& report, Gallery& gallery) {
 
 int validate(const std::string& out, bool full) {
   Size size;
-  if (full) size = {5, 40, 40, 16, 25, 60, 50, 20};
+  if (full) size = {5, 40, 40, 16, 25, 60, 50, 20, 40, 5};
   Report report;
   Gallery gallery(out);
   for (auto figure : {figure10, figure11, figure12, figure13, figure14, figure5}) {
@@ -346,9 +356,9 @@ int validate(const std::string& out, bool full) {
   std::ofstream md(std::filesystem::path(out) / "heliotropism_metrics.md");
   md << "# Seed 000 findings (heliotropism validation)\n\n"
      << fmt::format("Sizes: {} seeds, {} generations (Table 1: 40; Fig. 10's I sweep {}), sky {} x {}, Fig. 11 cut after {} grown to {}, "
-                    "Fig. 5 {} generations with sprouting 1..{}; transmittance t = {:g}. Lengths in branch lengths.\n\n",
+                    "Fig. 5 {} generations with sprouting 1..{}; Fig. 12's outline at {} generations, {} seeds; transmittance t = {:g}. Lengths in branch lengths.\n\n",
                     size.seeds, size.generations, size.droop_generations, size.sky_bands, 2 * size.sky_bands, size.regrow_cut,
-                    size.regrow_end, size.bud_generations, size.bud_latest, base(size).light.transmittance)
+                    size.regrow_end, size.bud_generations, size.bud_latest, size.outline_generations, size.outline_seeds, base(size).light.transmittance)
      << report.table.str() << "\n## Findings\n\n" << report.findings.str();
   md << "\nColumns: lengths in branch lengths; drooping = tips below their bough's base (10 generations back); "
         "downward = tips pointing below the horizontal; top-view NN = mean nearest-neighbour distance; roundness CV = "
