@@ -133,17 +133,17 @@ struct SweepPoint {
   std::string first_tree;  // the first seed's tree in the gallery
 };
 
-// Mean over seeds 1..seeds; the first seed's tree goes to the gallery, if given.
-SweepPoint sweep_point(const KanamaruParameters& p, int seeds, Gallery* gallery) {
+// Mean over seeds 1..seeds; the first seed's tree goes to the gallery.
+SweepPoint sweep_point(const KanamaruParameters& p, int seeds, Gallery& gallery) {
   static std::map<std::string, SweepPoint> done;
-  const std::string key = fmt::format("{}|{}|{}", key_of(p), seeds, gallery != nullptr);
+  const std::string key = fmt::format("{}|{}", key_of(p), seeds);
   if (auto found = done.find(key); found != done.end()) return found->second;
   std::vector<CrownMetrics> all;
   SweepPoint point;
   for (int s = 1; s <= seeds; ++s) {
     const DichotomyTree tree = grow_dichotomy(p, static_cast<std::uint64_t>(s));
     all.push_back(measure_crown(crown_tips(tree)));
-    if (s == 1 && gallery) point.first_tree = gallery->write(tree, p.leaf_ball_radius);
+    if (s == 1) point.first_tree = gallery.write(tree, p.leaf_ball_radius);
   }
   point.mean = mean_of(all);
   return done[key] = point;
@@ -205,7 +205,7 @@ void figure10(const Size& size, Report& report, Gallery& gallery) {
     KanamaruParameters p = base(size);
     p.generations = size.droop_generations;
     p.heliotropism = strength;
-    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, gallery);
     by_strength.push_back(point.mean);
     gallery.show("fig10", title, fmt::format("({}) I = {:.1f}, G = {}", panel++, strength, size.droop_generations),
                  point.first_tree);
@@ -260,9 +260,10 @@ void figure12(const Size& size, Report& report, Gallery& gallery) {
   for (double radius : {2.0, 1.5, 1.0}) {
     KanamaruParameters p = base(size);
     p.leaf_ball_radius = radius;
-    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, gallery);
     m.push_back(point.mean);
-    gallery.show("fig12", "Fig. 12: leaf-ball radius R", fmt::format("({}) R = {:g}", panel++, radius), point.first_tree);
+    gallery.show("fig12", "Fig. 12: leaf-ball radius R", fmt::format("({}) R = {:g}, G = {}", panel++, radius, size.generations),
+                 point.first_tree);
     report.row("12", fmt::format("R = {:g}", radius), m.back());
   }
   report.check(m[2].tips > m[0].tips,
@@ -273,7 +274,10 @@ void figure12(const Size& size, Report& report, Gallery& gallery) {
     KanamaruParameters p = base(size);
     p.generations = size.outline_generations;
     p.leaf_ball_radius = radius;
-    grown.push_back(sweep_point(p, size.outline_seeds, nullptr).mean);
+    const SweepPoint point = sweep_point(p, size.outline_seeds, gallery);
+    grown.push_back(point.mean);
+    gallery.show("fig12", "Fig. 12: leaf-ball radius R",
+                 fmt::format("({}) R = {:g}, G = {}", panel++, radius, size.outline_generations), point.first_tree);
     report.row("12", fmt::format("R = {:g}, G = {}, {} seeds", radius, size.outline_generations, size.outline_seeds),
                grown.back());
   }
@@ -289,7 +293,7 @@ void figure12(const Size& size, Report& report, Gallery& gallery) {
 void figure13(const Size& size, Report& report, Gallery& gallery) {
   KanamaruParameters high = base(size), low = base(size);
   low.death.standard = 0.5;
-  const SweepPoint at_high = sweep_point(high, size.seeds, &gallery), at_low = sweep_point(low, size.seeds, &gallery);
+  const SweepPoint at_high = sweep_point(high, size.seeds, gallery), at_low = sweep_point(low, size.seeds, gallery);
   gallery.show("fig13", "Fig. 13: standard death threshold D0", "(a) D0 = 0.6", at_high.first_tree);
   gallery.show("fig13", "Fig. 13: standard death threshold D0", "(b) D0 = 0.5", at_low.first_tree);
   const CrownMetrics a = at_high.mean, b = at_low.mean;
@@ -307,7 +311,7 @@ void figure14(const Size& size, Report& report, Gallery& gallery) {
   for (double ratio : {1.0, 1.5, 3.0}) {
     KanamaruParameters p = base(size);
     p.light.intensity_ratio = ratio;
-    const SweepPoint point = sweep_point(p, size.seeds, &gallery);
+    const SweepPoint point = sweep_point(p, size.seeds, gallery);
     m.push_back(point.mean);
     gallery.show("fig14", "Fig. 14: light intensity ratio L", fmt::format("({}) L = {:g}", panel++, ratio), point.first_tree);
     report.row("14", fmt::format("L = {:g}", ratio), m.back());

@@ -130,9 +130,11 @@ def render_sweep(trees_dir, out_path, title, panels, top_view):
         extent = max(max(b[1] - b[0], b[3] - b[2]) for b in present)
         scale = 0.5 * MARGIN * extent + TIP_DOT_RADIUS
     else:
-        scale = 0.5 * MARGIN * max(max(b[5] - b[4] for b in present), max(b[1] - b[0] for b in present) / aspect)
+        scale = 0.5 * MARGIN * max(max(b[5] for b in present) - min(b[4] for b in present),
+                                   max(b[1] - b[0] for b in present) / aspect)
         scale += TIP_DOT_RADIUS
     floor = 1.0 * scale / size[1]  # about one pixel wide at the least
+    low, high = min(b[4] for b in present), max(b[5] for b in present)
 
     layout = CreateLayout(title)
     location = 0
@@ -152,7 +154,8 @@ def render_sweep(trees_dir, out_path, title, panels, top_view):
             label(view, title + (" (top view)" if top_view else ""), "Lower Left Corner", 12)
         if b is None:
             b = present[0]
-        centre = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
+        # Each tree centred across, all panels at one height so the trees stand on one ground line.
+        centre = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (low + high) / 2]
         if top_view:
             place_camera(view, centre, [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], scale)
         else:
