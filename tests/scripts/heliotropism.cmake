@@ -7,7 +7,24 @@ target_include_directories(heliotropism_validation PRIVATE ${PROJECT_SOURCE_DIR}
 
 add_test(NAME validation.heliotropism.findings
          COMMAND heliotropism_validation validate ${PROJECT_BINARY_DIR}/validation/heliotropism)
-set_tests_properties(validation.heliotropism.findings PROPERTIES TIMEOUT 600 LABELS "validation")
+set_tests_properties(validation.heliotropism.findings PROPERTIES TIMEOUT 600 LABELS "validation"
+                     FIXTURES_SETUP heliostand_heliotropism_sweeps)
+
+# The sweeps' pictures: the findings run leaves one tree per sweep value in validation/heliotropism/trees;
+# pvbatch draws each sweep's trees side by side (fig05_side.png ... fig14_side.png, fig10_top.png) into
+# build/validation/heliotropism, and run_pvbatch.sh checks the images show something.
+add_test(NAME validation.heliotropism.render_sweeps
+         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
+                 ${PROJECT_SOURCE_DIR}/validation/heliotropism/render_sweeps.py
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism/render
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism/trees
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism)
+set_tests_properties(validation.heliotropism.render_sweeps PROPERTIES
+  FIXTURES_REQUIRED heliostand_heliotropism_sweeps
+  SKIP_RETURN_CODE 77
+  TIMEOUT 600
+  RESOURCE_LOCK xvfb
+  LABELS "paraview")
 
 # The runner end to end on a small scenario (the full Table 1 tree, stands/kanamaru-fig10e, takes minutes).
 add_test(NAME validation.heliotropism.run_scenario
