@@ -1,7 +1,8 @@
 # Seed 000's light response at stand scale (validation/stand_light): gap regrowth after the example plantation's
 # first thinning vs an unthinned control, and self-thinning of a dense unthinned plantation. Both runs' outputs
-# and build/validation/stand_light/stand_light.md; the thinned and control runs are then rendered side by side
-# with the stand renderer (ParaView; skipped without it outside CI).
+# and build/validation/stand_light/stand_light.md; the self-thinning run is then rendered with the stand renderer
+# (ParaView; skipped without it outside CI). The two 62-tree gap runs are not rendered here: ~4 min each on 2
+# cores (validation/stand_light/README.md has the command).
 add_executable(stand_light_validation ${PROJECT_SOURCE_DIR}/validation/stand_light/stand_light_validation.cpp)
 target_link_libraries(stand_light_validation PRIVATE heliostand_core)
 target_include_directories(stand_light_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
@@ -13,7 +14,7 @@ set_tests_properties(validation.stand_light.findings PROPERTIES
   TIMEOUT 1200 LABELS "validation" FIXTURES_SETUP heliostand_stand_light_runs
   ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
 
-foreach(run gap_thinned gap_control self_thinning)
+foreach(run self_thinning)
   add_test(NAME validation.stand_light.render_${run}
            COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh
                    ${STAND_LIGHT_OUT}/${run}/stand.pvd ${STAND_LIGHT_OUT}/pictures/${run})
