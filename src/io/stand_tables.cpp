@@ -1,5 +1,7 @@
 #include "io/stand_tables.hpp"
 
+#include <cmath>
+
 namespace heliostand {
 namespace {
 
@@ -9,7 +11,6 @@ constexpr int kCentimetres = 2;   // 0.1 mm of diameter
 constexpr int kVolume = 4;        // 0.1 dm³
 constexpr int kPerHectare = 3;
 constexpr int kLight = 4;
-constexpr int kYears = 1;
 
 }  // namespace
 
@@ -51,7 +52,7 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .text(to_string(tree.status))
         .integer(tree.hollow_count > 0 ? 1 : 0)
         .integer(tree.hollow_count)
-        .number(tree.age_years, kYears)
+        .integer(std::lround(tree.age_years))  // trees age in whole years
         .number(tree.height_m, kMetres)
         .number(tree.dbh_cm, kCentimetres)
         .number(tree.crown_base_m, kMetres)

@@ -126,6 +126,8 @@ TEST_F(StandOutputRun, TreesAndEventsTablesRoundTripTheirLabels) {
   const auto leaf_balls = std::find(trees[0].begin(), trees[0].end(), "leaf_balls") - trees[0].begin();
   ASSERT_LT(static_cast<std::size_t>(leaf_balls), trees[0].size());
   EXPECT_EQ(trees[1][leaf_balls], std::to_string(testing::synthetic_ball_count(6)));
+  const auto age = std::find(trees[0].begin(), trees[0].end(), "age") - trees[0].begin();
+  EXPECT_EQ(trees[1][age], "12") << "a whole number of years (the synthetic tree of height 6 is 12 years old)";
   const auto events = testing::parse_csv(read_text(root_ / "events.csv"));
   ASSERT_EQ(events.size(), 3u);
   EXPECT_EQ(events[1], (std::vector<std::string>{"12", "2", "A,2", "removed", "thinning:low", "20.00", "14.000",
