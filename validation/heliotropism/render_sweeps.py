@@ -15,8 +15,11 @@ import os
 import sys
 from collections import OrderedDict
 
-from paraview.simple import (Calculator, CreateLayout, CreateView, Delete, ExtractSurface, Glyph, RemoveLayout,
-                             Render, SaveScreenshot, Show, Text, Threshold, Tube, XMLPolyDataReader)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "paraview"))
+from pvbatch_common import new_view as common_view, radius_tubes  # noqa: E402
+
+from paraview.simple import (CreateLayout, Delete, ExtractSurface, Glyph, RemoveLayout,
+                             Render, SaveScreenshot, Show, Text, Threshold, XMLPolyDataReader)
 
 PANEL_SIZE = [420, 560]  # pixels of one panel (side view); top views are square
 BARK = [0.40, 0.26, 0.14]
@@ -48,18 +51,7 @@ def bounds_of(source):
 
 def show_tubes(source, view, colour, floor):
     """Branches as tubes of their pipe-model radius, at least `floor` so the thinnest stay visible."""
-    floored = Calculator(Input=source)
-    floored.AttributeType = "Point Data"
-    floored.ResultArrayName = "tube_radius"
-    floored.Function = "max(radius, %g)" % floor
-    tubes = Tube(Input=floored)
-    tubes.Scalars = ["POINTS", "tube_radius"]
-    tubes.VaryRadius = "By Absolute Scalar"
-    tubes.NumberofSides = 8
-    display = Show(tubes, view)
-    display.ColorArrayName = ["POINTS", ""]
-    display.AmbientColor = colour
-    display.DiffuseColor = colour
+    radius_tubes(source, view, colour, floor, sides=8)
 
 
 def show_tree(branches, tips, view, two_trees, floor):
@@ -93,14 +85,7 @@ def label(view, text, location, size):
 
 
 def new_view(size):
-    view = CreateView("RenderView")
-    view.ViewSize = size
-    view.OrientationAxesVisibility = 0
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.Background = BACKGROUND
+    view = common_view(size, BACKGROUND, axes=False)
     view.CameraParallelProjection = 1
     return view
 

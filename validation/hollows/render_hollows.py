@@ -25,8 +25,11 @@ import os
 import sys
 import xml.etree.ElementTree as ElementTree
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "paraview"))
+from pvbatch_common import new_view  # noqa: E402
+
 from paraview import servermanager
-from paraview.simple import (ColorBy, Contour, CreateView, Delete, ExtractBlock, GetColorTransferFunction,
+from paraview.simple import (ColorBy, Contour, Delete, ExtractBlock, GetColorTransferFunction,
                              GetScalarBar, MergeBlocks, OpenDataFile, PointDatatoCellData, Render, SaveScreenshot,
                              Show, Text, Threshold)
 
@@ -265,14 +268,7 @@ def render_mesh(path, out_png, focus=None, colour="part", azimuth=None, elevatio
     if azimuth is not None:
         outward = [math.cos(math.radians(azimuth)), math.sin(math.radians(azimuth))]
 
-    view = CreateView("RenderView")
-    view.ViewSize = IMAGE_SIZE
-    view.OrientationAxesVisibility = 1
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.Background = BACKGROUND
+    view = new_view(IMAGE_SIZE, BACKGROUND)
     show_coloured(source, view, colour)
     if title:
         caption = Text(Text=title)

@@ -13,7 +13,10 @@ import os
 import sys
 import xml.etree.ElementTree as ElementTree
 
-from paraview.simple import (Calculator, ColorBy, CreateView, Delete, ExtractBlock, GetColorTransferFunction,
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pvbatch_common import new_view, radius_tubes  # noqa: E402
+
+from paraview.simple import (ColorBy, Delete, ExtractBlock, GetColorTransferFunction,
                              GetScalarBar, Glyph, Plane, PVDReader, Render, SaveScreenshot, Show, Tube)
 
 IMAGE_SIZE = [1200, 800]
@@ -94,19 +97,7 @@ def has_block(pvd, name):
 def show_roots(reader, view):
     """Root segments as tubes of their own radius (fine roots are sub-millimetre: a floor keeps them
     visible at stand scale without changing the coarse roots)."""
-    floored = Calculator(Input=block(reader, "roots"))
-    floored.AttributeType = "Point Data"
-    floored.ResultArrayName = "tube_radius"
-    floored.Function = "max(radius, 0.004)"
-    tubes = Tube(Input=floored)
-    tubes.Scalars = ["POINTS", "tube_radius"]
-    tubes.VaryRadius = "By Absolute Scalar"
-    tubes.NumberofSides = 6
-    display = Show(tubes, view)
-    display.ColorArrayName = ["POINTS", ""]
-    display.AmbientColor = ROOT
-    display.DiffuseColor = ROOT
-    return tubes
+    return radius_tubes(block(reader, "roots"), view, ROOT, floor=0.004, sides=6)
 
 
 def show_ground(bounds, view, opacity=1.0, surface_z=None):
@@ -153,14 +144,7 @@ def main(argv):
 
     reader = PVDReader(FileName=pvd)
     times = time_steps(reader)
-    view = CreateView("RenderView")
-    view.ViewSize = IMAGE_SIZE
-    view.OrientationAxesVisibility = 1
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    view.Background = SKY
+    view = new_view(IMAGE_SIZE, SKY)
 
     tubes = show_branches(reader, view)
     show_leaf_balls(reader, view)
