@@ -5,6 +5,7 @@
 //
 // Integration: validate(spec, trunk) first (reports name the HollowSpec field), then build_hollow().
 #include <array>
+#include <functional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -64,10 +65,20 @@ HollowMesh build_trunk_mesh(const TrunkSurface& trunk, double tolerance_m = 0.00
 // plain stem at least this tall. Side by side at one height is not supported.
 inline constexpr double min_hollow_gap_m = 0.02;
 
-// Each hollow's own problems (validate(), field prefixed "hollows[i]." with i its index in `hollows`), and a
-// problem on "hollows[j].height_m" for every hollow whose bark patch comes within min_hollow_gap_m of
-// another's (the reason names the other hollow and the centre distance needed). Empty when the stem can be
-// built.
+// A problem of one hollow among several: its index in the list, and the problem as validate() states it
+// (field = the HollowSpec member, no prefix).
+struct HollowProblem {
+  std::size_t hollow = 0;
+  InputProblem problem;
+};
+
+// Each hollow's own problems (validate()), and a problem on "height_m" of every hollow whose bark patch comes
+// within min_hollow_gap_m of another's; the reason names that other hollow as `name_of(its index)` and gives
+// the centre distance needed. Callers name the hollows as their user wrote them. Empty when the stem can be built.
+std::vector<HollowProblem> hollow_problems(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk,
+                                           const std::function<std::string(std::size_t)>& name_of);
+
+// hollow_problems() with the hollows named "hollows[i]" and each field prefixed "hollows[i].".
 std::vector<InputProblem> validate_hollows(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk);
 
 // One manifold mesh of the stem with all its hollows (in any order): none → build_trunk_mesh(trunk); one →

@@ -100,16 +100,14 @@ void zip_rings(HollowMesh& mesh, const std::vector<int>& lower, const std::vecto
 
 }  // namespace
 
-std::vector<InputProblem> validate_hollows(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk) {
-  std::vector<InputProblem> problems;
+std::vector<HollowProblem> hollow_problems(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk,
+                                           const std::function<std::string(std::size_t)>& name_of) {
+  std::vector<HollowProblem> problems;
   std::vector<bool> valid(hollows.size());
   for (std::size_t i = 0; i < hollows.size(); ++i) {
     auto own = validate(hollows[i], trunk);
     valid[i] = own.empty();
-    for (auto& p : own) {
-      p.field = fmt::format("hollows[{}].{}", i, p.field);
-      problems.push_back(std::move(p));
-    }
+    for (auto& p : own) problems.push_back({i, std::move(p)});
   }
   const std::vector<int> order = by_height(hollows);
   for (std::size_t a = 0; a < order.size(); ++a) {
@@ -120,13 +118,24 @@ std::vector<InputProblem> validate_hollows(const std::vector<HollowSpec>& hollow
       if (below.hi + min_hollow_gap_m <= above.lo) continue;
       const double needed = (below.hi - hollows[lo].height_m) + (hollows[hi].height_m - above.lo) + min_hollow_gap_m;
       problems.push_back(
-          {"", 0, fmt::format("hollows[{}].height_m", hi),
-           fmt::format("its bark patch ({:.3f}–{:.3f} m) comes within {} m of the patch of hollows[{}] at {} m "
-                       "({:.3f}–{:.3f} m); hollows on one stem are stacked in height (side by side at one height "
-                       "is not supported), so their centres must be at least {:.3f} m apart, got {:.3f} m",
-                       above.lo, above.hi, min_hollow_gap_m, lo, hollows[lo].height_m, below.lo, below.hi, needed,
-                       hollows[hi].height_m - hollows[lo].height_m)});
+          {static_cast<std::size_t>(hi),
+           {"", 0, "height_m",
+            fmt::format("its bark patch ({:.3f}–{:.3f} m) comes within {} m of the patch of {} at {} m "
+                        "({:.3f}–{:.3f} m); hollows on one stem are stacked in height (side by side at one height "
+                        "is not supported), so their centres must be at least {:.3f} m apart, got {:.3f} m",
+                        above.lo, above.hi, min_hollow_gap_m, name_of(static_cast<std::size_t>(lo)),
+                        hollows[lo].height_m, below.lo, below.hi, needed, hollows[hi].height_m - hollows[lo].height_m)}});
     }
+  }
+  return problems;
+}
+
+std::vector<InputProblem> validate_hollows(const std::vector<HollowSpec>& hollows, const TrunkSurface& trunk) {
+  auto internal_name = [](std::size_t i) { return fmt::format("hollows[{}]", i); };
+  std::vector<InputProblem> problems;
+  for (auto& [i, problem] : hollow_problems(hollows, trunk, internal_name)) {
+    problem.field = internal_name(i) + "." + problem.field;
+    problems.push_back(std::move(problem));
   }
   return problems;
 }
