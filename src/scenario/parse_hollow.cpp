@@ -103,10 +103,13 @@ void attach_hollows_to_survey(ScenarioDraft& draft, ScenarioProblems& problems) 
     if (std::find(received.begin(), received.end(), it->second) == received.end()) received.push_back(it->second);
     it->second->hollows.push_back(std::move(entry.hollow));
   }
-  // The survey reader checked the survey's own hollows; here the trees that received scenario ones.
-  for (SurveyRecord* tree : received)
-    for (const InputProblem& problem : check_tree_hollows(*tree, scenario.species_of(*tree)))
-      if (problem.kind == "key") problems.add(problem.line, problem.field, problem.reason);
+  // The trees that received scenario hollows, checked with all their hollows. The survey's own hollows passed
+  // the survey reader alone (else the survey was rejected and nothing is attached), so every problem here is
+  // new — a clash may land on a survey hollow, which keeps its own file, line and column.
+  for (SurveyRecord* tree : received) {
+    const auto found = check_tree_hollows(*tree, scenario.species_of(*tree));
+    if (!found.empty()) problems.merge(InputError(found, "key"));
+  }
 }
 
 }  // namespace heliostand::scenario_detail

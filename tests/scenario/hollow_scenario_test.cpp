@@ -70,6 +70,25 @@ TEST(ScenarioHollows, BadHollowsNameTheTreeAndTheKey) {
                           HasSubstr("scenario.toml:23: key 'hollow[4].height_m': tree \"3\": the hollow reaches")));
 }
 
+TEST(ScenarioHollows, ASurveyHollowClashingWithAScenarioHollowIsReportedOnTheHigherOne) {
+  // Tree "1" has a hollow at 1.6 m from the survey column; the scenario adds one at 1.4 m on the same tree.
+  // Each fits alone, but their bark patches overlap: the higher one, the survey's, carries the problem.
+  const std::string survey = "id,x,y,height,dbh,crown_radius,crown_base,hollow\n"
+                             "1,2,2,9,12,1,4,1.6/0\n"
+                             "2,7,2,10,13,1.1,4.2,\n"
+                             "3,2,7,8,11,0.9,3.8,\n"
+                             "4,7,7,9.5,12.5,1,4,\n";
+  const auto lines = scenario_problems("hollow_clash", minimal_stand +
+                                                           "[[hollow]]\n"  // 11
+                                                           "tree = 1\n"
+                                                           "height_m = 1.4\n"
+                                                           "azimuth_deg = 180\n",
+                                       survey);
+  ASSERT_EQ(lines.size(), 1u) << ::testing::PrintToString(lines);
+  EXPECT_THAT(lines[0], HasSubstr("survey.csv:2: column 'hollow': tree \"1\", hollow 1: height_m: its bark patch"));
+  EXPECT_THAT(lines[0], HasSubstr("of hollow[1] at 1.4 m"));
+}
+
 const std::string habitat_tree_3 =
     "[[hollow]]\n"
     "tree = 3\n"
