@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "survey/cell_text.hpp"
 #include "survey/strict_number.hpp"
 
 namespace heliostand {
@@ -23,12 +24,6 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   return parts;
 }
 
-std::string_view trimmed(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-  return text;
-}
-
 constexpr std::array<const char*, 4> field_names{"height_m", "azimuth_deg", "width_m", "wound_height_m"};
 
 // One hollow, "1.4/135" or "1.4/135/0.08/0.15"; the error names the hollow (1-based) and the field.
@@ -41,7 +36,7 @@ std::variant<hollow::HollowSpec, std::string> parse_one(std::string_view text, s
   }
   std::array<double, 4> values{};
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    const std::string_view field = trimmed(fields[i]);
+    const std::string_view field = trim_blanks(fields[i]);
     const auto value = parse_strict_number(std::string(field));
     if (!value || !std::isfinite(*value))
       return fmt::format("hollow {}: {}: expected a number, got \"{}\"", number, field_names[i], field);
@@ -70,11 +65,11 @@ std::variant<hollow::HollowSpec, std::string> parse_one(std::string_view text, s
 
 std::variant<std::vector<hollow::HollowSpec>, std::string> parse_hollow_cell(std::string_view cell) {
   std::vector<hollow::HollowSpec> hollows;
-  cell = trimmed(cell);
+  cell = trim_blanks(cell);
   if (cell.empty()) return hollows;
   const auto entries = split(cell, ';');
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    auto one = parse_one(trimmed(entries[i]), i + 1);
+    auto one = parse_one(trim_blanks(entries[i]), i + 1);
     if (auto* reason = std::get_if<std::string>(&one)) return std::move(*reason);
     hollows.push_back(std::get<hollow::HollowSpec>(one));
   }

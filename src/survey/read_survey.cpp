@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "io/input_error.hpp"
+#include "survey/cell_text.hpp"
 #include "survey/check_hollows.hpp"
 #include "survey/csv_table.hpp"
 #include "survey/hollow_cell.hpp"
@@ -37,12 +38,6 @@ std::string read_whole_file(const std::filesystem::path& file, const std::string
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-std::string trimmed(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-  return std::string(text);
 }
 
 // Where each survey column sits in the file, and the name the file gives it (used in messages, so the
@@ -71,7 +66,7 @@ ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::
   ColumnLayout layout;
   layout.field_count = header.fields.size();
   for (std::size_t i = 0; i < header.fields.size(); ++i) {
-    const std::string written = trimmed(header.fields[i]);
+    const std::string written(trim_blanks(header.fields[i]));
     const auto column = survey_column_named(written);
     if (!column) {
       warnings.push_back(fmt::format("{}: column '{}' is not a survey column; ignored", file, written));
@@ -148,7 +143,7 @@ class RowReader {
 
  private:
   std::string cell(SurveyColumn column) const {
-    return trimmed(record_->fields[static_cast<std::size_t>(layout_.index[static_cast<std::size_t>(column)])]);
+    return std::string(trim_blanks(record_->fields[static_cast<std::size_t>(layout_.index[static_cast<std::size_t>(column)])]));
   }
 
   void number(SurveyColumn column, Sign sign, bool required) {

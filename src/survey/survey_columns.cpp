@@ -4,6 +4,8 @@
 #include <array>
 #include <cctype>
 
+#include "survey/cell_text.hpp"
+
 namespace heliostand {
 
 namespace {
@@ -45,11 +47,8 @@ const SurveyColumnInfo& survey_column_info(SurveyColumn column) {
 }
 
 std::string normalise_header_name(std::string_view cell) {
-  auto is_space = [](char c) { return c == ' ' || c == '\t'; };
-  while (!cell.empty() && is_space(cell.front())) cell.remove_prefix(1);
-  while (!cell.empty() && is_space(cell.back())) cell.remove_suffix(1);
   std::string name;
-  for (char c : cell) {
+  for (char c : trim_blanks(cell)) {
     if (c == ' ' || c == '-') c = '_';
     name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
