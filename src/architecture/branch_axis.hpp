@@ -17,6 +17,7 @@ struct BranchAxis {
   bool alive = true;
   int year_stopped = 0;        // tree age in the year growth stopped and the axis died
   double length_at_death_m = 0;  // eq. 13 measures the fallen fraction against this
+  int starved_years = 0;       // years in a row its tip's light allowed no elongation (first order, in a stand)
 };
 
 }  // namespace heliostand

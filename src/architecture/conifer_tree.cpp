@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -12,6 +13,7 @@
 #include "architecture/elongation.hpp"
 #include "architecture/growth_stop.hpp"
 #include "architecture/height_curve.hpp"
+#include "architecture/light_growth.hpp"
 #include "architecture/lower_order_branching.hpp"
 #include "architecture/stem_taper.hpp"
 #include "architecture/whorl.hpp"
@@ -93,27 +95,147 @@ int ConiferTree::add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dve
   return index;
 }
 
+// One year, in the light the tree's foliage got last year (Shoot::light and relative_light, 1 for a tree grown
+// alone): the leader makes the site curve's increment times its light response, every branch its seed-001
+// elongation times its tip's response, and the stem its open-grown basal-area increment times the tree's light
+// budget (docs/model.md "Growth from light").
 void ConiferTree::grow_year() {
   ++age_;
+  const double potential_height_growth = height_at(age_) - height_at(age_ - 1);
+  const auto& stem = axes_[0].shoots;
+  const double leader_light = stem.empty() ? 1.0 : shoots_[stem.back()].relative_light;
+  const double height_growth = potential_height_growth * height_response(species_, leader_light);
   const std::size_t axes_before_this_year = axes_.size();
-  grow_stem();
+  grow_stem(height_growth);
   // Parents come before their laterals in the axis list, so a parent's death is known when its laterals
   // are visited; laterals that sprout during this loop are appended and not grown twice.
   for (std::size_t i = 1; i < axes_before_this_year; ++i) grow_axis(static_cast<int>(i));
-  sprout_whorl();
+  sprout_whorl(height_growth);
   droop_first_order_branches();
   drop_dead_branches();
+  grow_diameter(height_m_ - height_growth + potential_height_growth);
   update_radii();
+}
+
+// Eq. 2's taper gives the open-grown tree's DBH for its height, so the open-grown increment of this tree is its own
+// DBH carried along the taper from one height to the next (in DBH², cm², proportional to basal area).
+double ConiferTree::open_grown_increment(double previous_height_m, double open_grown_height_m) const {
+  const double taper_before = StemTaper{previous_height_m, crown_base_m()}.dbh_cm(species_);
+  if (dbh_cm_ <= 0.0 || taper_before <= 0.0) return 0.0;
+  const double open_dbh = dbh_cm_ * StemTaper{open_grown_height_m, crown_base_m()}.dbh_cm(species_) / taper_before;
+  return std::max(0.0, open_dbh * open_dbh - dbh_cm_ * dbh_cm_);
+}
+
+// The basal-area increment at breast height (docs/model.md "Growth from light"). Before any light field (a tree
+// grown alone to its survey age) it is the open-grown increment of the taper. In a stand it is light-use
+// efficiency on the pipe model: proportional to the light the crown absorbed, scaled so that the established
+// crown standing alone makes the taper's open-grown increment — a wider, brighter crown grows a thicker stem.
+void ConiferTree::grow_diameter(double open_grown_height_m) {
+  const double before = dbh_cm_;
+  const double previous_height = shoots_[axes_[0].shoots.back()].base.z - stem_base_.z;  // this year's leader base
+  if (dbh_cm_ <= 0.0 || StemTaper{previous_height, crown_base_m()}.dbh_cm(species_) <= 0.0) {
+    // Passing breast height: the stem starts with the taper's diameter at its height.
+    dbh_cm_ = StemTaper{height_m_, crown_base_m()}.dbh_cm(species_);
+  } else if (reference_absorbed_light_ <= 0.0) {
+    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + open_grown_increment(previous_height, open_grown_height_m));
+  } else {
+    const double share = std::min(absorbed_light_ / reference_absorbed_light_, 4.0);
+    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + reference_increment_ * diameter_response(species_, share));
+  }
+  dbh_increments_cm_.push_back(dbh_cm_ - before);
+  if (dbh_increments_cm_.size() > 10) dbh_increments_cm_.erase(dbh_increments_cm_.begin());
+}
+
+void ConiferTree::set_light_budget(double absorbed, double absorbed_open) {
+  absorbed_light_ = absorbed;
+  relative_light_budget_ = absorbed_open > 0.0 ? std::min(1.0, absorbed / absorbed_open) : 0.0;
+  if (reference_absorbed_light_ > 0.0 || absorbed_open <= 0.0) return;
+  reference_absorbed_light_ = absorbed_open;
+  const double next_height = height_m_ + (height_at(age_ + 1) - height_at(age_));
+  reference_increment_ = open_grown_increment(height_m_, next_height);
+}
+
+double ConiferTree::recent_radial_growth_mm(int years) const {
+  const int n = std::min<int>(years, static_cast<int>(dbh_increments_cm_.size()));
+  if (n <= 0) return 0.0;
+  double sum = 0.0;
+  for (int k = 0; k < n; ++k) sum += dbh_increments_cm_[dbh_increments_cm_.size() - 1 - k];
+  return 10.0 * sum / 2.0 / n;  // cm of diameter -> mm of radius
+}
+
+double ConiferTree::stem_scale() const {
+  const double taper = StemTaper{height_m_, crown_base_m()}.dbh_cm(species_);
+  return taper > 0.0 && dbh_cm_ > 0.0 ? dbh_cm_ / taper : 1.0;
+}
+
+// The light response of the shoot an axis grows from: its tip's relative light of last year.
+double ConiferTree::elongation_factor(int shoot_index) const {
+  return elongation_response(species_, shoots_[shoot_index].relative_light);
+}
+
+void ConiferTree::set_survey_state(double dbh_cm, double crown_base_m) {
+  if (height_m_ > breast_height_m && dbh_cm > 0.0) dbh_cm_ = dbh_cm;
+  // The highest living whorl at or below the record keeps the crown; everything living below it dies.
+  double keep_from = -1.0;
+  for (const BranchAxis& axis : axes_)
+    if (axis.order == 1 && axis.alive && !axis.shoots.empty()) {
+      const double insertion = shoots_[axis.shoots.front()].base.z - stem_base_.z;
+      if (insertion <= crown_base_m + 1e-9) keep_from = std::max(keep_from, insertion);
+    }
+  if (keep_from >= 0.0)
+    for (std::size_t i = 1; i < axes_.size(); ++i) {
+      const BranchAxis& axis = axes_[i];
+      if (axis.order != 1 || !axis.alive || axis.shoots.empty()) continue;
+      if (shoots_[axis.shoots.front()].base.z - stem_base_.z < keep_from - 1e-6) {
+        for (std::size_t j = i; j < axes_.size(); ++j)
+          if (axes_[j].first_order_root == static_cast<int>(i) && axes_[j].alive) kill_axis(static_cast<int>(j));
+      }
+    }
+  crown_base_floor_m_ = std::min(crown_base_m, height_m_);
+  update_radii();
+}
+
+void ConiferTree::set_foliage_light(std::span<const FoliageLight> light) {
+  const std::vector<int> foliage = foliage_shoot_indices();
+  if (light.size() != foliage.size())
+    throw std::invalid_argument("ConiferTree::set_foliage_light: " + std::to_string(light.size()) + " samples for " +
+                                std::to_string(foliage.size()) + " leaf balls of tree " + std::to_string(tree_id_));
+  std::vector<char> has_ball(shoots_.size(), 0);
+  for (std::size_t k = 0; k < foliage.size(); ++k) {
+    Shoot& shoot = shoots_[foliage[k]];
+    shoot.light = light[k].light;
+    shoot.relative_light = light[k].relative_light;
+    shoot.light_vector = light[k].vector;
+    has_ball[foliage[k]] = 1;
+  }
+  // Parents precede their laterals: one forward pass hands each bearer's light to the shoots without a ball.
+  for (std::size_t i = 0; i < shoots_.size(); ++i)
+    if (!has_ball[i] && shoots_[i].parent >= 0 && shoots_[i].order > 0) {
+      const Shoot& bearer = shoots_[shoots_[i].parent];
+      shoots_[i].light = bearer.light;
+      shoots_[i].relative_light = bearer.relative_light;
+      shoots_[i].light_vector = bearer.light_vector;
+    }
+}
+
+std::vector<ConiferTree::FoliageLight> ConiferTree::foliage_light() const {
+  std::vector<FoliageLight> light;
+  for (const Shoot& shoot : shoots_)
+    if (carries_foliage(shoot)) light.push_back({shoot.light, shoot.relative_light, shoot.light_vector});
+  return light;
 }
 
 void ConiferTree::grow_to_age(int age) {
   while (age_ < age) grow_year();
 }
 
-void ConiferTree::grow_stem() {
+void ConiferTree::grow_stem(double height_growth_m) {
   const auto& stem = axes_[0].shoots;
   const int leader = stem.empty() ? -1 : stem.back();
-  add_shoot(0, leader, stem_base_ + up * height_at(age_ - 1), stem_base_ + up * height_at(age_));
+  const double relative_light = leader < 0 ? 1.0 : shoots_[leader].relative_light;
+  const int shoot = add_shoot(0, leader, stem_base_ + up * height_m_, stem_base_ + up * (height_m_ + height_growth_m));
+  shoots_[shoot].relative_light = relative_light;  // until the new leader is lit
+  height_m_ += height_growth_m;
 }
 
 void ConiferTree::grow_axis(int i) {
@@ -122,14 +244,26 @@ void ConiferTree::grow_axis(int i) {
   const int order = axes_[i].order;
   const int years_since_emergence = age_ - axes_[i].year_formed;
   const double stop_years = growth_stop_years(species_, calibration_.growth_stop_years_first_order, order);
-  // A lateral dies with the branch that carries it; every branch dies when its growth stops (eq. 12).
-  if ((parent > 0 && !axes_[parent].alive) || !still_growing(years_since_emergence, stop_years)) {
+  // A lateral dies with the branch that carries it; every branch dies when its growth stops (eq. 12) — in a
+  // stand, first-order branches die of light instead: a tip whose light allows no elongation for
+  // branch_starved_years_to_death years in a row dies (LIGNUM's bud death).
+  const bool stops_by_age = !(light_driven_crown_ && order == 1) && !still_growing(years_since_emergence, stop_years);
+  if ((parent > 0 && !axes_[parent].alive) || stops_by_age) {
     kill_axis(i);
     return;
   }
-  const double alpha = order == 1 ? species_.elongation_alpha : species_.lower_order_elongation_alpha;
-  const double length = annual_elongation_m(axes_[i].initial_elongation_m, years_since_emergence + 1, alpha);
   const int last = axes_[i].shoots.back();
+  const double response = elongation_factor(last);
+  if (order == 1 && light_driven_crown_) {
+    axes_[i].starved_years = response > 0.0 ? 0 : axes_[i].starved_years + 1;
+    if (axes_[i].starved_years >= species_.branch_starved_years_to_death) {
+      kill_axis(i);
+      return;
+    }
+  }
+  const double alpha = order == 1 ? species_.elongation_alpha : species_.lower_order_elongation_alpha;
+  const double length =
+      response * annual_elongation_m(axes_[i].initial_elongation_m, years_since_emergence + 1, alpha);
   const Shoot& previous = shoots_[last];
   // First order: this year's shoot follows eq. 4's angle, lifted by the anti-gravity offset (the droop step
   // then turns the whole branch so its chord sits exactly on eq. 4). Lower orders grow straight on.
@@ -138,9 +272,12 @@ void ConiferTree::grow_axis(int i) {
                                           species_.first_order_upward_offset_deg),
                                   axes_[i].azimuth_rad)
                  : glm::normalize(previous.tip - previous.base);
-  if (length <= 0.0) return;
-  const glm::dvec3 tip = previous.tip;
-  add_shoot(i, last, tip, tip + direction * length);
+  if (length <= 1e-4) return;  // no shoot below a tenth of a millimetre
+  const Shoot bearer = previous;  // add_shoot() may move the shoot list
+  const int shoot = add_shoot(i, last, bearer.tip, bearer.tip + direction * length);
+  shoots_[shoot].light = bearer.light;  // until it is lit itself
+  shoots_[shoot].relative_light = bearer.relative_light;
+  shoots_[shoot].light_vector = bearer.light_vector;
   sprout_laterals(i, last);
 }
 
@@ -182,12 +319,11 @@ double ConiferTree::with_branching_bonus(double probability, int axis_index) con
 }
 
 // This year's whorl flushes at the tip of last year's leader; its branches' tips start on the crown cone (eq. 9).
-void ConiferTree::sprout_whorl() {
+void ConiferTree::sprout_whorl(double height_growth) {
   const auto& stem = axes_[0].shoots;
   if (stem.size() < 2 || !still_growing(0.0, calibration_.growth_stop_years_first_order)) return;
   const int node_shoot = stem[stem.size() - 2];
   if (shoots_[node_shoot].year_formed != age_ - 1) return;
-  const double height_growth = height_at(age_) - height_at(age_ - 1);
   const double initial =
       calibration_.elongation_scale * first_order_initial_elongation_m(species_, height_growth, age_);
   if (initial <= 0.0) return;
@@ -197,7 +333,9 @@ void ConiferTree::sprout_whorl() {
   const double lifted = radians(species_.initial_branch_angle_deg - species_.first_order_upward_offset_deg);
   for (double azimuth : whorl_azimuths(count, species_.whorl_azimuth_jitter, random)) {
     const int axis = add_axis(1, 0, initial, azimuth);
-    add_shoot(axis, node_shoot, node, node + direction_from(lifted, azimuth) * initial);
+    const int shoot = add_shoot(axis, node_shoot, node, node + direction_from(lifted, azimuth) * initial);
+    shoots_[shoot].light = shoots_[node_shoot].light;
+    shoots_[shoot].relative_light = shoots_[node_shoot].relative_light;
   }
 }
 
@@ -306,10 +444,11 @@ void ConiferTree::remove_flagged(std::vector<char> removed) {
 // the branch tip. Dead branches keep the radii they had when they died.
 void ConiferTree::update_radii() {
   const StemTaper taper{height_m(), crown_base_m()};
+  const double scale = stem_scale();
   for (int s : axes_[0].shoots) {
     Shoot& shoot = shoots_[s];
-    shoot.base_radius_m = 0.005 * taper.diameter_cm(species_, shoot.base.z - stem_base_.z);
-    shoot.tip_radius_m = 0.005 * taper.diameter_cm(species_, shoot.tip.z - stem_base_.z);
+    shoot.base_radius_m = 0.005 * scale * taper.diameter_cm(species_, shoot.base.z - stem_base_.z);
+    shoot.tip_radius_m = 0.005 * scale * taper.diameter_cm(species_, shoot.tip.z - stem_base_.z);
   }
   for (std::size_t i = 1; i < axes_.size(); ++i) {
     if (!axes_[i].alive) continue;
@@ -323,19 +462,18 @@ void ConiferTree::update_radii() {
   }
 }
 
-double ConiferTree::height_m() const { return height_at(age_); }
-
 double ConiferTree::crown_base_m() const {
   double lowest = height_m();
   for (const BranchAxis& axis : axes_)
     if (axis.order == 1 && axis.alive && !axis.shoots.empty())
       lowest = std::min(lowest, shoots_[axis.shoots.front()].base.z - stem_base_.z);
-  return lowest;
+  return std::min(std::max(lowest, crown_base_floor_m_), height_m());
 }
 
-double ConiferTree::dbh_cm() const { return StemTaper{height_m(), crown_base_m()}.dbh_cm(species_); }
-
-double ConiferTree::stem_volume_m3() const { return StemTaper{height_m(), crown_base_m()}.volume_m3(species_); }
+double ConiferTree::stem_volume_m3() const {
+  const double scale = stem_scale();
+  return scale * scale * StemTaper{height_m(), crown_base_m()}.volume_m3(species_);
+}
 
 bool ConiferTree::carries_foliage(const Shoot& shoot) const {
   return shoot.alive && shoot.order <= species_.foliage_max_order &&

@@ -4,6 +4,7 @@
 // order, dead branches that persist and then fall tip-first. docs/model.md "Seed 001" explains each rule.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -31,11 +32,39 @@ class ConiferTree {
   void grow_to_age(int age);  // grow_year() until age() == age
 
   int age() const { return age_; }
-  double height_m() const;
-  double dbh_cm() const;            // stem diameter at 1.3 m (eq. 2); 0 while shorter than 1.3 m
-  double crown_base_m() const;      // height of the lowest living first-order branch (height if none)
+  double height_m() const { return height_m_; }  // grown by the site curve's increment x the leader's light
+  double dbh_cm() const { return dbh_cm_; }       // grown by basal-area increments; 0 while shorter than 1.3 m
+  // Height of the lowest living first-order branch (height if none), never below the surveyed crown base: the
+  // survey's value holds until the whorl below it dies (set_survey_state()).
+  double crown_base_m() const;
   double crown_radius_m() const;    // projected crown radius of living foliage (definition in docs/model.md)
-  double stem_volume_m3() const;    // stem volume by integrating eq. 2 along the stem
+  double stem_volume_m3() const;    // stem volume: eq. 2's taper scaled to the tree's own DBH, integrated
+
+  // Start the tree as surveyed (stand/establishment.cpp): its DBH and crown base are the record's. First-order
+  // branches below the highest whorl at or under the recorded crown base die (they persist and fall, eq. 13).
+  void set_survey_state(double dbh_cm, double crown_base_m);
+  // In a stand, first-order branches die of light (a starved tip, LIGNUM's bud death) instead of after the
+  // growth-stop years of eq. 12, which only shaped the crown up to the survey.
+  void set_light_driven_crown(bool on) { light_driven_crown_ = on; }
+  bool light_driven_crown() const { return light_driven_crown_; }
+  // This year's light of every leaf ball (leaf_balls() order): the light in the stand and the relative light
+  // (stand / the tree alone). Shoots without a ball take their bearer's. grow_year() reads them next year.
+  struct FoliageLight {
+    double light = 1.0;
+    double relative_light = 1.0;
+    glm::dvec3 vector{0.0, 0.0, 1.0};
+  };
+  void set_foliage_light(std::span<const FoliageLight> light);
+  // The light of each leaf ball (leaf_balls() order), from its shoot.
+  std::vector<FoliageLight> foliage_light() const;
+  // The light the tree's foliage absorbed this year (Σ foliage amount × light, in the stand and with the tree
+  // alone; stand/stand_tree.hpp LightBudget): next year's basal-area increment follows it. The first call fixes
+  // the reference: the crown as established, alone, makes the open-grown increment of eq. 2's taper.
+  void set_light_budget(double absorbed, double absorbed_open);
+  double relative_light_budget() const { return relative_light_budget_; }
+  // Radial increment at breast height of the last `years` years, mean in mm/year (suppression mortality).
+  double recent_radial_growth_mm(int years) const;
+  double last_dbh_increment_cm() const { return dbh_increments_cm_.empty() ? 0.0 : dbh_increments_cm_.back(); }
 
   const std::vector<Shoot>& shoots() const { return shoots_; }
   const std::vector<BranchAxis>& axes() const { return axes_; }
@@ -72,13 +101,17 @@ class ConiferTree {
 
  private:
   double height_at(int age) const;
+  double stem_scale() const;  // the tree's DBH / eq. 2's DBH for its height and crown base (1 below 1.3 m)
+  void grow_diameter(double open_grown_height_m);
+  double open_grown_increment(double previous_height_m, double open_grown_height_m) const;
+  double elongation_factor(int shoot_index) const;
   int add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip);
   int add_axis(int order, int parent_axis, double initial_elongation_m, double azimuth_rad);
-  void grow_stem();
+  void grow_stem(double height_growth_m);
   void grow_branches();
   void grow_axis(int axis_index);
   void sprout_laterals(int parent_axis_index, int bearing_shoot);
-  void sprout_whorl();
+  void sprout_whorl(double height_growth_m);
   void kill_axis(int axis_index);
   void droop_first_order_branches();
   void drop_dead_branches();
@@ -94,6 +127,15 @@ class ConiferTree {
   int age_ = 0;
   int next_axis_id_ = 0;
   int leader_shaded_years_ = 0;
+  double height_m_ = 0;
+  double dbh_cm_ = 0;
+  double crown_base_floor_m_ = 0;
+  bool light_driven_crown_ = false;
+  double relative_light_budget_ = 1.0;
+  double absorbed_light_ = 0;              // this year's Σ foliage × light (m)
+  double reference_absorbed_light_ = 0;    // the established crown alone (0: not set, taper-driven growth)
+  double reference_increment_ = 0;         // its open-grown increment of DBH² (cm²), eq. 2's taper
+  std::vector<double> dbh_increments_cm_;  // one per year grown (recent years at the back, at most 10)
   std::vector<Shoot> shoots_;
   std::vector<BranchAxis> axes_;  // axes_[0] is the stem
   std::array<double, 8> branching_bonus_{};  // crown–root coupling, by path

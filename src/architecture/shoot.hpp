@@ -15,6 +15,12 @@ struct Shoot {
   int order = 0;            // 0 stem, 1 first-order branch, 2 second-order, ...
   int year_formed = 0;      // tree age in the year it flushed
   bool alive = true;        // dead shoots persist until they fall (eq. 13)
+  // The light of the shoot's foliage from the latest light field of the stand (the shoot's own leaf ball, or
+  // for a shoot without one the ball of the shoot that bears it). 1 before any light has been computed:
+  // a tree grown alone (establishment, seed experiments) grows at its open-grown rate.
+  double light = 1.0;           // Σ B S / Σ B0 S of the ball in the stand, 0..1
+  double relative_light = 1.0;  // light in the stand / light with its tree alone under the reference sky, 0..1
+  glm::dvec3 light_vector{0.0, 0.0, 1.0};  // normalize(Σ N B S) of the same ball: where its light comes from
 };
 
 // The foliage of one living shoot (seed 000): a sphere centred at the shoot tip.

@@ -83,11 +83,45 @@ struct SpeciesParameters {
   // light is below its own threshold D = D0 + dither * U(-1, 1). Conifer defaults are calibrated for the stand's
   // dense foliage (docs/model.md); seed 000's Table 1 values (D0 = 0.6, dither 0.3) would kill every shoot.
   double heliotropism_strength = 0.4;    // I (Table 1)
-  double death_threshold = 0.3;          // D0 on relative light (stand / open grown; calibrated, docs/model.md)
-  double death_threshold_dither = 0.15;  // half of D0, as the seed's 0.3 around 0.6
+  double death_threshold = 0.15;          // D0 on relative light (stand / open grown; calibrated, docs/model.md)
+  double death_threshold_dither = 0.1;  // half of D0, as the seed's 0.3 around 0.6
   // ours: a tree whose leader is shaded out (below its threshold) this many years in a row is overtopped and
   // dies of light, even while lower branches, shaded by their own crown anyway, still pass the relative test.
-  int suppressed_years_to_death = 3;
+  // Off by default in stands since growth follows light (a shaded leader slows down instead, and the tree dies of
+  // suppression when its diameter growth stalls); a large value keeps the rule for experiments.
+  int suppressed_years_to_death = 1000;
+
+  // Growth that follows light (docs/model.md "Growth from light"). r is the relative light of a leaf ball (its
+  // light in the stand / its light with its own tree standing alone under the reference sky), in 0..1.
+  // Shoot elongation, leader (height) growth: the seed's open-grown increment times the response
+  //   f(r) = clamp((r - zero) / (saturation - zero), 0, 1)
+  // (LIGNUM's fip: zero below a fraction of full light, linear up to saturation; Perttunen et al. 1996, Sievänen
+  // et al. 2008). Todomatsu is shade tolerant: shoots keep growing down to a low share of the light.
+  double elongation_light_zero = 0.03;
+  double elongation_light_saturation = 0.4;
+  double height_light_zero = 0.05;
+  double height_light_saturation = 0.5;
+  // Diameter: each year's basal-area increment at breast height = the open-grown increment of the seed's taper
+  // (eq. 2 scaled to the tree's own DBH) for the established crown alone, times (light the crown absorbs now /
+  // light the established crown absorbed alone) ^ exponent. 1 would be strict light-use efficiency; below 1,
+  // shaded foliage uses light more efficiently (shade needles), as measured light-response curves saturate.
+  double diameter_light_exponent = 0.5;
+  // The share of that reference light a crown must absorb before the stem thickens at all (the respiration of the
+  // living tissue comes first: LIGNUM's P - M); between it and 1 the response rises to 1 as
+  // ((share - compensation) / (1 - compensation)) ^ exponent.
+  double diameter_light_compensation = 0.05;
+  // First-order branches die of light once their tip's response has been zero (no elongation) this many years in
+  // a row (bud death, LIGNUM); the growth-stop years of eq. 12 then only shape the crown before the survey.
+  int branch_starved_years_to_death = 2;
+  // Suppression mortality from recent radial growth G (mm/year, mean of `suppression_growth_years` years):
+  // annual probability p = 1 - exp(-m1 exp(-m2 G)) (Kobe & Coates 1997's form, as SORTIE-ND's GMF mortality).
+  double suppression_m1 = 0.5;
+  double suppression_m2 = 6.0;                  // per mm/year
+  int suppression_growth_years = 3;
+  double background_mortality = 0.0;            // annual probability of death from any other cause (off)
+  // Reineke's maximum stand density index: stems/ha at a quadratic mean DBH of 25 cm on the self-thinning line
+  // (slope -1.605). Used to judge self-thinning (validation), not as a growth rule. docs/model.md gives the source.
+  double max_stand_density_index = 1500.0;
 };
 
 }  // namespace heliostand

@@ -32,6 +32,11 @@ void CsvWriter::header(std::initializer_list<std::string_view> columns) {
   end_row();
 }
 
+void CsvWriter::header(std::span<const std::string> columns) {
+  for (const std::string& column : columns) text(column);
+  end_row();
+}
+
 void CsvWriter::separator() {
   if (row_started_) out_ << ',';
   row_started_ = true;

@@ -4,6 +4,7 @@
 // Numbers use a fixed number of decimals so tables diff cleanly between runs; NaN is an empty field.
 #include <initializer_list>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -20,6 +21,7 @@ class CsvWriter {
   explicit CsvWriter(std::ostream& out) : out_(out) {}
 
   void header(std::initializer_list<std::string_view> columns);
+  void header(std::span<const std::string> columns);
 
   CsvWriter& text(std::string_view value);
   CsvWriter& integer(long long value);

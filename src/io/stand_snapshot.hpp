@@ -30,7 +30,13 @@ struct TreeSnapshot {
   double crown_base_m = 0;
   double crown_radius_m = 0;
   double volume_m3 = 0;             // stem volume
-  double mean_light = 0;            // mean relative light of the tree's leaf balls (0..1); NaN if unknown
+  double mean_light = 0;            // mean light of the tree's leaf balls (0..1 of the open sky); NaN if unknown
+  // The tree's light budget this year (docs/model.md "Growth from light"): Σ foliage amount × light over its
+  // leaf balls (m of shoot), and its relative light (that sum / the same sum with the tree alone, 0..1).
+  double light_budget = std::numeric_limits<double>::quiet_NaN();
+  double relative_light = std::numeric_limits<double>::quiet_NaN();
+  double dbh_increment_cm = 0;      // this year's DBH increment
+  std::string status_reason;        // cause of death or thinning reason; empty while alive
   // Roots (stand/root_zone.hpp, filled by RootZone::annotate); NaN when roots are off or the tree is gone.
   double root_length_m = std::numeric_limits<double>::quiet_NaN();
   double root_max_depth_m = std::numeric_limits<double>::quiet_NaN();

@@ -1,6 +1,8 @@
 #include "io/stand_tables.hpp"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace heliostand {
 namespace {
@@ -15,9 +17,16 @@ constexpr int kLight = 4;
 }  // namespace
 
 void write_stand_table_header(CsvWriter& csv) {
-  csv.header({"stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm", "mean_height_m",
-              "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha", "removed_basal_area_m2_per_ha",
-              "removed_volume_m3_per_ha", "dead_stems_per_ha"});
+  std::vector<std::string> columns{"stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
+                                   "mean_height_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
+                                   "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha",
+                                   "dead_basal_area_m2_per_ha", "dead_volume_m3_per_ha"};
+  for (DeathCause cause : all_death_causes) {
+    const std::string name(cause_code(cause));
+    for (const char* quantity : {"_stems_per_ha", "_basal_area_m2_per_ha", "_volume_m3_per_ha"})
+      columns.push_back("dead_" + name + quantity);
+  }
+  csv.header(columns);
 }
 
 void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
@@ -33,13 +42,19 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
       .number(row.removed_basal_area_m2_per_ha, kPerHectare)
       .number(row.removed_volume_m3_per_ha, kPerHectare)
       .number(row.dead_stems_per_ha, kPerHectare)
-      .end_row();
+      .number(row.dead_basal_area_m2_per_ha, kPerHectare)
+      .number(row.dead_volume_m3_per_ha, kPerHectare);
+  for (const auto& losses : row.dead_by_cause)
+    csv.number(losses.stems_per_ha, kPerHectare)
+        .number(losses.basal_area_m2_per_ha, kPerHectare)
+        .number(losses.volume_m3_per_ha, kPerHectare);
+  csv.end_row();
 }
 
 void write_trees_header(CsvWriter& csv) {
   csv.header({"stand_age", "tree_id", "label", "x_m", "y_m", "status", "habitat_tree", "hollows", "age", "height_m", "dbh_cm", "crown_base_m",
-              "crown_radius_m", "volume_m3", "leaf_balls", "mean_light",
-              "root_length_m", "root_max_depth_m", "root_uptake"});
+              "crown_radius_m", "volume_m3", "leaf_balls", "mean_light", "light_budget", "relative_light",
+              "dbh_increment_cm", "root_length_m", "root_max_depth_m", "root_uptake"});
 }
 
 void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
@@ -60,6 +75,9 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .number(tree.volume_m3, kVolume)
         .integer(static_cast<long long>(tree.leaf_balls.size()))
         .number(tree.mean_light, kLight)
+        .number(tree.light_budget, kLight)
+        .number(tree.relative_light, kLight)
+        .number(tree.dbh_increment_cm, kCentimetres + 1)
         .number(tree.root_length_m, kMetres)
         .number(tree.root_max_depth_m, kMetres)
         .number(tree.root_uptake, kLight)

@@ -141,7 +141,8 @@ vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot) {
       {"age_years", &TreeSnapshot::age_years},       {"height_m", &TreeSnapshot::height_m},
       {"dbh_cm", &TreeSnapshot::dbh_cm},             {"crown_base_m", &TreeSnapshot::crown_base_m},
       {"crown_radius_m", &TreeSnapshot::crown_radius_m}, {"volume_m3", &TreeSnapshot::volume_m3},
-      {"mean_light", &TreeSnapshot::mean_light},
+      {"mean_light", &TreeSnapshot::mean_light},     {"light_budget", &TreeSnapshot::light_budget},
+      {"relative_light", &TreeSnapshot::relative_light}, {"dbh_increment_cm", &TreeSnapshot::dbh_increment_cm},
   };
   std::vector<vtkSmartPointer<vtkDoubleArray>> measure_arrays;
   for (const Measure& m : measures) measure_arrays.push_back(named_array<vtkDoubleArray>(m.name, tree_count));

@@ -31,7 +31,8 @@ vtkSmartPointer<vtkPolyData> build_branches_block(const StandSnapshot& snapshot)
 vtkSmartPointer<vtkPolyData> build_leaf_balls_block(const StandSnapshot& snapshot);
 
 // One vertex per tree at its stem base. Point data: tree_id, label (survey id), status (TreeStatus code),
-// hollow_count, habitat_tree (1 when it carries a hollow), age_years, height_m, dbh_cm, crown_base_m, crown_radius_m, volume_m3, mean_light.
+// hollow_count, habitat_tree (1 when it carries a hollow), age_years, height_m, dbh_cm, crown_base_m, crown_radius_m, volume_m3, mean_light,
+// light_budget, relative_light, dbh_increment_cm.
 vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot);
 
 // Every standing tree's stem surface (TreeSnapshot::trunk) in stand coordinates, as triangles. Point data:

@@ -12,7 +12,7 @@ CelestialSphere::CelestialSphere(const LightParameters& parameters)
   for (int v = 0; v < bands_; ++v) {
     const double top = v * band_width(), bottom = (v + 1) * band_width(), middle = (v + 0.5) * band_width();
     const double solid_angle = sector_width() * (std::cos(top) - std::cos(bottom));
-    const double intensity = v < bands_ / 2 ? parameters.sky_light() : parameters.ground_light();
+    const double intensity = v < bands_ / 2 ? parameters.sky_radiance(middle) : parameters.ground_light();
     for (int h = 0; h < sectors_; ++h) {
       const double azimuth = (h + 0.5) * sector_width();
       const glm::dvec3 direction{std::sin(middle) * std::cos(azimuth), std::sin(middle) * std::sin(azimuth),

@@ -1,5 +1,6 @@
 #include "light/light_parameters.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,7 @@ void validate(const LightParameters& p) {
   require(p.intensity_ratio > 0, "intensity_ratio", "expected a number > 0");
   require(p.sky_scale > 0, "sky_scale", "expected a number > 0");
   require(p.transmittance > 0 && p.transmittance <= 1, "transmittance", "expected a number in (0, 1]");
+  require(p.ground_albedo >= 0 && p.ground_albedo <= 1, "ground_albedo", "expected a number in 0..1");
   require(p.cutoff_m > 0, "cutoff_m", "expected a distance > 0 m");
   require(p.far_field_cell_m > 0, "far_field_cell_m", "expected a distance > 0 m");
   require(p.far_field_table_mb >= 1, "far_field_table_mb", "expected at least 1 MB");
@@ -27,6 +29,11 @@ void validate(const LightParameters& p) {
     require(p.plot_x_max > p.plot_x_min, "plot_x_max", "periodic edges need plot_x_max > plot_x_min");
     require(p.plot_y_max > p.plot_y_min, "plot_y_max", "periodic edges need plot_y_max > plot_y_min");
   }
+}
+
+double LightParameters::sky_radiance(double theta) const {
+  if (sky == Sky::kanamaru) return sky_light();
+  return sky_light() * (1.0 + 2.0 * std::cos(theta)) / 3.0;
 }
 
 }  // namespace heliostand

@@ -12,6 +12,13 @@ struct LightParameters {
   double intensity_ratio = 1.5;  // L = C1 / C2 (Table 1: 3/2); C1 = 1 for the sky, C2 = 1/L for ground reflection
   double sky_scale = 1.0;        // multiplies C1 and C2 (seed 003's "sky light x0.5 / x0.7" experiments)
   double transmittance = 0.5;    // t: factor per occluding ball on a patch (seed gives none; docs/model.md)
+  // The sky's radiance (docs/light.md "Skies"). Seed 000's two-level sky: C1 over the whole upper hemisphere,
+  // C2 = C1 / L from below (40 % of the light from below the horizon). A stand sees the standard overcast sky
+  // (Moon & Spencer 1942; CIE standard overcast): radiance C1 (1 + 2 cos θ) / 3 at zenith angle θ, and from
+  // below the light reflected by a ground of albedo ρ (a Lambertian floor under that sky: radiance ρ · 7/9 · C1).
+  enum class Sky { kanamaru, standard_overcast };
+  Sky sky = Sky::kanamaru;
+  double ground_albedo = 0.15;   // forest floor under conifers, 0.1-0.2 (docs/light.md)
 
   // Culling: occluders whose centre lies within `cutoff_m` of a ball's centre are tested exactly; beyond it,
   // a voxel grid of leaf-ball density attenuates each patch direction (far field).
@@ -26,8 +33,12 @@ struct LightParameters {
   bool periodic = false;
   double plot_x_min = 0, plot_y_min = 0, plot_x_max = 0, plot_y_max = 0;  // used when periodic
 
-  double sky_light() const { return sky_scale; }                        // C1
-  double ground_light() const { return sky_scale / intensity_ratio; }   // C2
+  double sky_light() const { return sky_scale; }  // C1 (the zenith radiance of the overcast sky)
+  double ground_light() const {                   // C2
+    return sky == Sky::kanamaru ? sky_scale / intensity_ratio : sky_scale * ground_albedo * 7.0 / 9.0;
+  }
+  // Radiance of a sky patch whose centre lies at zenith angle `theta` (rad) in the upper hemisphere.
+  double sky_radiance(double theta) const;
 };
 
 // Throws std::invalid_argument naming the field and the reason when a value is out of its domain.

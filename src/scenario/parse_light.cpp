@@ -12,12 +12,13 @@ namespace {
 using L = LightParameters;
 
 // Every LightParameters field, with its allowed range.
-const std::array<ParameterField<L>, 13> light_fields{{
+const std::array<ParameterField<L>, 14> light_fields{{
     {"sky_bands", &L::sky_bands, between(2.0, 1024.0)},
     {"sky_sectors", &L::sky_sectors, between(4.0, 4096.0)},
     {"intensity_ratio", &L::intensity_ratio, positive()},
     {"sky_scale", &L::sky_scale, positive()},
     {"transmittance", &L::transmittance, between(0.0, 1.0)},
+    {"ground_albedo", &L::ground_albedo, between(0.0, 1.0)},
     {"exact", &L::exact},
     {"cutoff_m", &L::cutoff_m, positive()},
     {"far_field_cell_m", &L::far_field_cell_m, positive()},
@@ -39,10 +40,17 @@ void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
   light.plot_x_max = plot.x_max;
   light.plot_y_max = plot.y_max;
 
+  // A stand sees the standard overcast sky unless [light] asks for seed 000's two-level sky (docs/light.md).
+  light.sky = LightParameters::Sky::standard_overcast;
   const toml::table* table = as_table(node, "light", problems);
   if (!table) return;
   TomlTableReader reader(*table, "light", problems);
   read_parameter_fields<L>(reader, light_fields, light);
+  if (auto sky = reader.string("sky")) {
+    if (*sky == "overcast") light.sky = LightParameters::Sky::standard_overcast;
+    else if (*sky == "kanamaru") light.sky = LightParameters::Sky::kanamaru;
+    else reader.problem("sky", fmt::format("expected \"overcast\" or \"kanamaru\", got \"{}\"", *sky));
+  }
   reader.report_unknown_keys();
 
   // The first V/2 bands are the upper hemisphere: V must split evenly.

@@ -13,7 +13,7 @@ namespace {
 using S = SpeciesParameters;
 
 // Every SpeciesParameters field except `name` (which is the table's key), with its allowed range.
-const std::array<ParameterField<S>, 39> species_fields{{
+const std::array<ParameterField<S>, 51> species_fields{{
     {"site_asymptote_m", &S::site_asymptote_m, positive()},
     {"height_k", &S::height_k, positive()},
     {"height_m", &S::height_m, {0.0, 1.0, false, true}},  // p = 1/(1-m) needs m < 1
@@ -53,6 +53,18 @@ const std::array<ParameterField<S>, 39> species_fields{{
     {"death_threshold", &S::death_threshold, between(0.0, 1.0)},
     {"death_threshold_dither", &S::death_threshold_dither, between(0.0, 1.0)},
     {"suppressed_years_to_death", &S::suppressed_years_to_death, between(1.0, 1000.0)},
+    {"elongation_light_zero", &S::elongation_light_zero, between(0.0, 1.0)},
+    {"elongation_light_saturation", &S::elongation_light_saturation, between(0.0, 1.0)},
+    {"height_light_zero", &S::height_light_zero, between(0.0, 1.0)},
+    {"height_light_saturation", &S::height_light_saturation, between(0.0, 1.0)},
+    {"diameter_light_exponent", &S::diameter_light_exponent, positive()},
+    {"diameter_light_compensation", &S::diameter_light_compensation, {0.0, 1.0, true, false}},
+    {"branch_starved_years_to_death", &S::branch_starved_years_to_death, between(1.0, 1000.0)},
+    {"suppression_m1", &S::suppression_m1, non_negative()},
+    {"suppression_m2", &S::suppression_m2, non_negative()},
+    {"suppression_growth_years", &S::suppression_growth_years, between(1.0, 10.0)},
+    {"background_mortality", &S::background_mortality, between(0.0, 1.0)},
+    {"max_stand_density_index", &S::max_stand_density_index, positive()},
 }};
 
 std::span<const ParameterField<S>> fields() { return species_fields; }

@@ -21,9 +21,12 @@ const char* to_string(CalibrationStatus status) {
 }
 
 ConiferTree grow_calibrated_tree(const SpeciesParameters& species, const TreeCalibration& calibration,
-                                 int age_years, glm::dvec3 stem_base, std::uint64_t seed, int tree_id) {
+                                 int age_years, glm::dvec3 stem_base, std::uint64_t seed, int tree_id,
+                                 const SurveyState& survey) {
   ConiferTree tree(species, calibration, stem_base, seed, tree_id);
   tree.grow_to_age(age_years);
+  if (survey.dbh_cm || survey.crown_base_m)
+    tree.set_survey_state(survey.dbh_cm.value_or(tree.dbh_cm()), survey.crown_base_m.value_or(tree.crown_base_m()));
   return tree;
 }
 
@@ -49,23 +52,29 @@ class Fit {
 
   ConiferTree grow(const TreeCalibration& calibration) {
     ++regrowths_;
+    return grow_calibrated_tree(species_, calibration, target_.age_years, {}, seed_, tree_id_,
+                                {target_.dbh_cm, target_.crown_base_m});
+  }
+  ConiferTree grow_unpruned(const TreeCalibration& calibration) {
+    ++regrowths_;
     return grow_calibrated_tree(species_, calibration, target_.age_years, {}, seed_, tree_id_);
   }
 
   // Crown base falls as first-order branches live longer, one whorl per whole year, and does not depend on
-  // the elongation scale (branches die by age alone): bisect whole years on the smallest-possible tree.
+  // the elongation scale (branches die by age alone): bisect whole years on the smallest-possible tree, for the
+  // shortest life that leaves a living whorl at or below the record (set_survey_state then prunes to it).
   double fit_growth_stop_years(TreeCalibration calibration, double record) {
     calibration.elongation_scale = 0.05;  // tiny shoots: laterals stay under the minimum parent length, fast
-    int low = 1, high = std::max(1, target_.age_years);  // crown_base(low) ≥ crown_base(high)
+    int low = 1, high = std::max(1, target_.age_years) + 1;  // crown_base(low) ≥ crown_base(high)
     auto crown_base = [&](int years) {
       calibration.growth_stop_years_first_order = years;
-      return grow(calibration).crown_base_m();
+      return grow_unpruned(calibration).crown_base_m();
     };
     while (high - low > 1) {
       const int middle = (low + high) / 2;
-      (crown_base(middle) > record ? low : high) = middle;
+      (crown_base(middle) > record + 1e-9 ? low : high) = middle;
     }
-    return std::abs(crown_base(low) - record) <= std::abs(crown_base(high) - record) ? low : high;
+    return high;
   }
 
   // Crown radius grows nearly in proportion to the elongation scale: take proportional (secant through the

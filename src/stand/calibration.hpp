@@ -22,12 +22,19 @@ struct SurveyTarget {
   double height_m = 0;
   std::optional<double> crown_radius_m;  // projected crown radius (half the surveyed crown diameter)
   std::optional<double> crown_base_m;    // live-crown base height
+  std::optional<double> dbh_cm;          // the tree starts with it (not fitted: DBH is state, not shape)
+};
+
+// What the survey fixes directly on the grown tree (ConiferTree::set_survey_state).
+struct SurveyState {
+  std::optional<double> dbh_cm;
+  std::optional<double> crown_base_m;
 };
 
 struct CalibrationTolerance {
   double height_relative = 0.05;
-  double crown_radius_relative = 0.10;
-  double crown_base_m = 0.5;            // best effort: reported, does not make the tree unusable
+  double crown_radius_relative = 0.02;
+  double crown_base_m = 0.5;            // the crown base is set exactly (set_survey_state); a guard
   int max_crown_radius_regrowths = 16;
 };
 
@@ -63,7 +70,9 @@ CalibrationResult calibrate_tree(const SpeciesParameters& species, const SurveyT
 
 // The tree grown from planting to `age_years` with the given calibration (the same stream as calibration used,
 // so it matches what calibrate_tree measured; the stem base only moves the tree).
+// With `survey`, the record's DBH and crown base are set on the grown tree (ConiferTree::set_survey_state).
 ConiferTree grow_calibrated_tree(const SpeciesParameters& species, const TreeCalibration& calibration,
-                                 int age_years, glm::dvec3 stem_base, std::uint64_t seed, int tree_id);
+                                 int age_years, glm::dvec3 stem_base, std::uint64_t seed, int tree_id,
+                                 const SurveyState& survey = {});
 
 }  // namespace heliostand

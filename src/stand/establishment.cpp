@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "rng/random_stream.hpp"
+#include "architecture/stem_taper.hpp"
 #include "stand/calibration.hpp"
 #include "stand/parallel_for.hpp"
 
@@ -16,9 +17,11 @@ SurveyTarget target_of(const SurveyRecord& record) {
   SurveyTarget target;
   target.age_years = static_cast<int>(std::lround(record.age_years));
   target.height_m = record.height_m;
-  // Imputed crown values are allometric guesses, not observations: fit only what was surveyed.
-  if (!record.imputed.crown_radius) target.crown_radius_m = record.crown_radius_m;
-  if (!record.imputed.crown_base) target.crown_base_m = record.crown_base_m;
+  // Every tree starts as surveyed, or as imputed where the survey has no value (the imputation is logged once per
+  // column by the survey reader): the run starts from the numbers the user sees in `heliostand check`.
+  target.crown_radius_m = record.crown_radius_m;
+  target.crown_base_m = std::min(record.crown_base_m, record.height_m);
+  if (record.height_m > breast_height_m && record.dbh_cm > 0.0) target.dbh_cm = record.dbh_cm;
   return target;
 }
 
@@ -48,8 +51,11 @@ std::vector<StandTree> establish_stand(const Scenario& scenario, EstablishmentRe
     const SpeciesParameters& species = scenario.species_of(record);
     const int id = static_cast<int>(i);
     fits[i] = calibrate_tree(species, target_of(record), scenario.run.seed, id);
-    ConiferTree tree = grow_calibrated_tree(species, fits[i].calibration, target_of(record).age_years,
-                                            {record.x_m, record.y_m, 0.0}, scenario.run.seed, id);
+    const SurveyTarget target = target_of(record);
+    ConiferTree tree = grow_calibrated_tree(species, fits[i].calibration, target.age_years,
+                                            {record.x_m, record.y_m, 0.0}, scenario.run.seed, id,
+                                            {target.dbh_cm, target.crown_base_m});
+    tree.set_light_driven_crown(true);
     grown[i].emplace(StandTree{id, record.id, record.species, std::move(tree)});
     grown[i]->hollows = hollows_of(record, scenario.run.seed, id);
   });

@@ -21,8 +21,8 @@ constexpr std::uint64_t kShootThreshold = 0x5EED000u;
 // the balls of the branch that bears them (species.hpp). They turn toward the light vector of the nearest ball
 // on the same first-order branch — every new shoot is heliotropic — and die with that branch's shoots
 // (kill_shaded_shoots takes the laterals of a dead shoot along).
-void bend_lumped_laterals(ConiferTree& tree, const std::vector<int>& foliage, std::span<const LightSample> light,
-                          const std::vector<int>& shaded_out, LightResponseOutcome& outcome) {
+void bend_lumped_laterals(ConiferTree& tree, const std::vector<int>& foliage, const std::vector<int>& shaded_out,
+                          LightResponseOutcome& outcome) {
   const double strength = tree.species().heliotropism_strength;
   if (strength <= 0.0) return;
   const auto& shoots = tree.shoots();
@@ -47,7 +47,8 @@ void bend_lumped_laterals(ConiferTree& tree, const std::vector<int>& foliage, st
     for (std::size_t k : branch->second)
       if (glm::distance(shoots[foliage[k]].tip, shoot.base) < glm::distance(shoots[foliage[nearest]].tip, shoot.base))
         nearest = k;
-    tree.bend_shoot(s, heliotropic_direction(shoot.tip - shoot.base, light[nearest].vector, strength));
+    const glm::dvec3 towards = shoots[foliage[nearest]].light_vector;
+    tree.bend_shoot(s, heliotropic_direction(shoot.tip - shoot.base, towards, strength));
     ++outcome.bent;
   }
 }
@@ -55,24 +56,11 @@ void bend_lumped_laterals(ConiferTree& tree, const std::vector<int>& foliage, st
 }  // namespace
 
 std::vector<LightSample> open_grown_light(const ConiferTree& tree, LightSolver& solver) {
-  const std::vector<LeafBall> balls = tree.leaf_balls();
-  const std::vector<int> foliage = tree.foliage_shoot_indices();
-  std::vector<std::uint32_t> fresh;
-  for (std::size_t k = 0; k < foliage.size(); ++k)
-    if (tree.shoots()[foliage[k]].year_formed == tree.age()) fresh.push_back(static_cast<std::uint32_t>(k));
-  std::vector<LightSample> light(balls.size());
-  const std::vector<LightSample> solved = solver.solve_for(balls, fresh);
-  for (std::size_t r = 0; r < fresh.size(); ++r) light[fresh[r]] = solved[r];
-  return light;
+  return solver.solve(tree.leaf_balls());
 }
 
-LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSample> light,
-                                      std::span<const LightSample> open_light, std::uint64_t seed) {
+LightResponseOutcome respond_to_light(ConiferTree& tree, std::uint64_t seed) {
   const std::vector<int> foliage = tree.foliage_shoot_indices();
-  if (light.size() != foliage.size() || open_light.size() != foliage.size())
-    throw std::invalid_argument("respond_to_light: " + std::to_string(light.size()) + " stand and " +
-                                std::to_string(open_light.size()) + " open-grown light samples for " +
-                                std::to_string(foliage.size()) + " leaf balls of tree " + std::to_string(tree.id()));
   const SpeciesParameters& species = tree.species();
   const DeathThreshold threshold{species.death_threshold, species.death_threshold_dither};
   LightResponseOutcome outcome;
@@ -84,20 +72,18 @@ LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSa
     ++outcome.new_shoots;
     RandomStream random(seed, {kShootThreshold, static_cast<std::uint64_t>(tree.id()),
                                static_cast<std::uint64_t>(tree.age()), static_cast<std::uint64_t>(s)});
-    // Neighbours can only take light away; an open-grown ball in total darkness has nothing to lose.
-    const double relative = open_light[k].light > 0.0 ? std::min(1.0, light[k].light / open_light[k].light) : 1.0;
-    const bool dies = dies_of_shade(relative, threshold.draw(random));
+    const bool dies = dies_of_shade(shoot.relative_light, threshold.draw(random));
     if (shoot.order == 0) {
       outcome.leader_shaded = outcome.leader_shaded || dies;
     } else if (dies) {
       shaded_out.push_back(s);
     } else if (species.heliotropism_strength > 0.0) {
       // A new shoot carries nothing yet: bending it moves only itself.
-      tree.bend_shoot(s, heliotropic_direction(shoot.tip - shoot.base, light[k].vector, species.heliotropism_strength));
+      tree.bend_shoot(s, heliotropic_direction(shoot.tip - shoot.base, shoot.light_vector, species.heliotropism_strength));
       ++outcome.bent;
     }
   }
-  bend_lumped_laterals(tree, foliage, light, shaded_out, outcome);
+  bend_lumped_laterals(tree, foliage, shaded_out, outcome);
   outcome.shaded_out = static_cast<int>(shaded_out.size());
   outcome.axes_killed = tree.kill_shaded_shoots(shaded_out);
   tree.record_leader_light(outcome.leader_shaded);

@@ -12,6 +12,7 @@
 // The stem leader is not bent (the stem stays vertical, seed 001) but faces the threshold. A tree dies of light
 // (cause "light") when its leader is shaded out and its branches carry no living foliage any more, or when its
 // leader has been shaded out `suppressed_years_to_death` years in a row (overtopped).
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -30,14 +31,20 @@ struct LightResponseOutcome {
   bool tree_died = false;
 };
 
-// The light of this year's shoots with the tree standing alone (the open-grown reference); one sample per leaf
-// ball in ConiferTree::leaf_balls() order, light 1 for the older foliage (not solved).
+// A leaf ball's relative light: its light in the stand under a sky of `sky_scale` over its light with its tree
+// alone under the reference sky, at most 1. Neighbours can only take light away; a ball in total darkness even
+// alone has nothing to lose (1).
+inline double relative_light(double stand_light, double open_light, double sky_scale = 1.0) {
+  return open_light > 0.0 ? std::min(1.0, sky_scale * stand_light / open_light) : 1.0;
+}
+
+// The light of every leaf ball with the tree standing alone (the open-grown reference), one sample per leaf ball
+// in ConiferTree::leaf_balls() order.
 std::vector<LightSample> open_grown_light(const ConiferTree& tree, LightSolver& solver);
 
-// `stand_light` and `open_light`: one sample per leaf ball, in ConiferTree::leaf_balls() order
-// (StandTree::leaf_ball_light and open_grown_light()). Thresholds draw from the stream (seed, tree id, tree age,
-// shoot index): independent of other trees.
-LightResponseOutcome respond_to_light(ConiferTree& tree, std::span<const LightSample> stand_light,
-                                      std::span<const LightSample> open_light, std::uint64_t seed);
+// Reads this year's light from the tree's shoots (Shoot::relative_light, light_vector; set by the stand's
+// illuminate step). Thresholds draw from the stream (seed, tree id, tree age, shoot index): independent of other
+// trees.
+LightResponseOutcome respond_to_light(ConiferTree& tree, std::uint64_t seed);
 
 }  // namespace heliostand

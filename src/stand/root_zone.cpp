@@ -102,7 +102,7 @@ void RootZone::couple(Stand& stand) {
       balance_[i] = PathBalance{};
       continue;
     }
-    const PathValues light = light_by_path(tree.tree, tree.leaf_ball_light, sky_scale_);
+    const PathValues light = light_by_path(tree.tree, tree.leaf_ball_light(), sky_scale_);
     const PathValues uptake = roots_[i]->available_uptake_by_path(soil_);
     balance_[i] = balance_paths(light, uptake, settings_.coupling);
     roots_[i]->set_branching_bonus(balance_[i]->root);

@@ -1,7 +1,6 @@
 #include "stand/simulation.hpp"
 
 #include <chrono>
-#include <map>
 
 #include <spdlog/spdlog.h>
 
@@ -10,41 +9,12 @@
 #include "stand/establishment.hpp"
 #include "stand/progress.hpp"
 #include "stand/root_zone.hpp"
-#include "stand/snapshot.hpp"
+#include "stand/stage_clock.hpp"
 #include "stand/stand.hpp"
+#include "stand/stand_year.hpp"
 
 namespace heliostand {
 namespace {
-
-// Wall time per stage of the yearly loop, for run.json.
-class StageClock {
- public:
-  template <typename Work>
-  auto time(const std::string& stage, Work work) {
-    const auto start = std::chrono::steady_clock::now();
-    struct Stop {
-      StageClock& clock;
-      const std::string& stage;
-      std::chrono::steady_clock::time_point start;
-      ~Stop() { clock.add(stage, std::chrono::steady_clock::now() - start); }
-    } stop{*this, stage, start};
-    return work();
-  }
-  double seconds(const std::string& stage) const {
-    for (const auto& [name, value] : stages_) if (name == stage) return value;
-    return 0;
-  }
-  const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
-
- private:
-  void add(const std::string& stage, std::chrono::steady_clock::duration elapsed) {
-    const double seconds = std::chrono::duration<double>(elapsed).count();
-    for (auto& [name, value] : stages_)
-      if (name == stage) { value += seconds; return; }
-    stages_.emplace_back(stage, seconds);
-  }
-  std::vector<std::pair<std::string, double>> stages_;
-};
 
 std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
   std::vector<ScheduledThinning> events;
@@ -65,10 +35,6 @@ LightParameters light_for(const Scenario& scenario) {
   return light;
 }
 
-bool is_output_year(const Scenario& scenario, int years_done) {
-  return years_done == scenario.run.years || years_done % scenario.run.output_interval_years == 0;
-}
-
 }  // namespace
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
@@ -82,9 +48,13 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   // The open-grown reference of the light response (each tree alone, once a year): a few hundred balls, so
   // the exact solver is cheapest (culling and far field only pay off for a whole stand), and a tree alone is
   // not repeated across periodic plot edges.
+  // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
+  // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
+  // edges; and it sees the reference sky (sky_scale 1), so a dimmer stand sky lowers every relative light.
   LightParameters open_grown = light_for(scenario);
   open_grown.exact = true;
   open_grown.periodic = false;
+  open_grown.sky_scale = 1.0;
   auto open_grown_solver = make_light_solver(device, open_grown);
   StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
 
@@ -101,26 +71,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
 
   ProgressLine progress(scenario.run.years, options.show_progress);
-  SnapshotTracker snapshots(output.vtk() != nullptr);
+  StandYear simulated_year(stand, *solver, *open_grown_solver, roots ? &*roots : nullptr, &output,
+                           {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,
+                            scenario.run.output_interval_years},
+                           clock);
   for (int year = 0; year <= scenario.run.years; ++year) {
-    if (year > 0) clock.time("growth", [&] { stand.grow_year(); return 0; });
-    const std::size_t balls = clock.time("light", [&] { return stand.illuminate(*solver); });
-    spdlog::debug("age {}: {} leaf balls lit", stand.stand_age(), balls);
-    // Order matters: the crown-root coupling reads this year's light of every leaf ball, before the light
-    // response bends and kills shoots (which changes the leaf-ball list).
-    if (roots) clock.time("roots", [&] { year > 0 ? roots->grow_year(stand) : roots->couple(stand); return 0; });
-    // The established trees grew without neighbours; competition acts from the first simulated year on.
-    if (year > 0)
-      output.record_events(clock.time("light response", [&] { return stand.respond_to_light(*open_grown_solver, scenario.run.seed); }));
-    const auto removals = stand.thin();
-    output.record_events(removals);
-    if (is_output_year(scenario, year))
-      clock.time("output", [&] {
-        StandSnapshot snapshot = snapshots.take(stand, year);
-        if (roots) roots->annotate(snapshot);
-        output.write_year(snapshot);
-        return 0;
-      });
+    simulated_year.run(year);
     if (options.observe_year) options.observe_year(stand, year);
     progress.update(year);
   }

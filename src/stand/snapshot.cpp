@@ -19,11 +19,15 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   snapshot.crown_radius_m = tree.crown_radius_m();
   snapshot.volume_m3 = tree.stem_volume_m3();
   snapshot.mean_light = stand_tree.mean_light();
+  snapshot.light_budget = stand_tree.light_budget.absorbed;
+  snapshot.relative_light = stand_tree.light_budget.relative();
+  snapshot.dbh_increment_cm = tree.last_dbh_increment_cm();
+  snapshot.status_reason = stand_tree.status_reason;
   snapshot.shoots = tree.shoots();
   snapshot.hollow_count = static_cast<int>(stand_tree.hollows.size());
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
-    for (const auto& sample : stand_tree.leaf_ball_light) snapshot.leaf_ball_light.push_back(sample.light);
+    for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
   }
   return snapshot;
 }

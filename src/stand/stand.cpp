@@ -4,7 +4,10 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 #include "stand/light_response.hpp"
+#include "stand/mortality.hpp"
 
 namespace heliostand {
 
@@ -21,7 +24,7 @@ void Stand::grow_year() {
     if (tree.alive()) tree.tree.grow_year();
 }
 
-std::size_t Stand::illuminate(LightSolver& solver) {
+std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale) {
   // Gather every living tree's leaf balls into one array (the solver sees the whole stand), remember
   // where each tree's run starts, solve once, and hand each tree its slice back.
   std::vector<LeafBall> balls;
@@ -34,48 +37,58 @@ std::size_t Stand::illuminate(LightSolver& solver) {
   }
   first_ball[trees_.size()] = balls.size();
 
-  const std::vector<LightSample> samples = solver.solve(balls);
-  for (std::size_t i = 0; i < trees_.size(); ++i)
-    trees_[i].leaf_ball_light.assign(samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i]),
-                                     samples.begin() + static_cast<std::ptrdiff_t>(first_ball[i + 1]));
+  const std::vector<LightSample> samples = stand_solver.solve(balls);
+  for (std::size_t i = 0; i < trees_.size(); ++i) {
+    StandTree& tree = trees_[i];
+    if (!tree.alive()) continue;
+    const std::vector<LightSample> open = open_grown_light(tree.tree, open_solver);
+    const std::vector<int> foliage = tree.tree.foliage_shoot_indices();
+    std::vector<ConiferTree::FoliageLight> light(foliage.size());
+    LightBudget budget;
+    for (std::size_t k = 0; k < foliage.size(); ++k) {
+      const LightSample& in_stand = samples[first_ball[i] + k];
+      const double received = sky_scale * in_stand.light;
+      light[k] = {in_stand.light, relative_light(in_stand.light, open[k].light, sky_scale), in_stand.vector};
+      const Shoot& shoot = tree.tree.shoots()[foliage[k]];
+      const double foliage_amount = glm::length(shoot.tip - shoot.base);
+      budget.absorbed += foliage_amount * received;
+      budget.absorbed_open += foliage_amount * open[k].light;
+    }
+    tree.tree.set_foliage_light(light);
+    tree.light_budget = budget;
+    tree.tree.set_light_budget(budget.absorbed, budget.absorbed_open);
+  }
   return balls.size();
 }
 
-namespace {
-
-// Shoots killed by the response stop carrying foliage (they are flagged, not renumbered): drop their samples so
-// leaf_ball_light stays one per leaf_balls() entry for the outputs.
-void keep_light_of_surviving_foliage(StandTree& tree, const std::vector<int>& foliage_before) {
-  const std::vector<int> foliage_after = tree.tree.foliage_shoot_indices();
-  std::vector<LightSample> kept;
-  kept.reserve(foliage_after.size());
-  for (std::size_t k = 0, j = 0; k < foliage_before.size() && j < foliage_after.size(); ++k)
-    if (foliage_before[k] == foliage_after[j]) {
-      kept.push_back(tree.leaf_ball_light[k]);
-      ++j;
-    }
-  tree.leaf_ball_light = std::move(kept);
+TreeEvent Stand::end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind) {
+  tree.status = status;
+  tree.status_changed_at_age = stand_age_;
+  tree.status_reason = reason;
+  return {stand_age_, tree.id, tree.label, kind, reason, tree.tree.dbh_cm(), tree.tree.height_m(),
+          tree.tree.stem_volume_m3()};
 }
 
-}  // namespace
-
-std::vector<TreeEvent> Stand::respond_to_light(LightSolver& solver, std::uint64_t seed) {
+std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
   std::vector<TreeEvent> deaths;
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
-    const std::vector<LightSample> open = open_grown_light(tree.tree, solver);
-    const std::vector<int> foliage_before = tree.tree.foliage_shoot_indices();
-    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, tree.leaf_ball_light, open, seed);
-    keep_light_of_surviving_foliage(tree, foliage_before);
-    if (!outcome.tree_died) continue;
-    tree.status = TreeStatus::dead;
-    tree.status_changed_at_age = stand_age_;
-    tree.status_reason = "light";
-    tree.leaf_ball_light.clear();
-    deaths.push_back({stand_age_, tree.id, tree.label, TreeEventKind::died, "light", tree.tree.dbh_cm(),
-                      tree.tree.height_m(), tree.tree.stem_volume_m3()});
+    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, seed);
+    if (outcome.tree_died)
+      deaths.push_back(end_of(tree, TreeStatus::dead, std::string(cause_code(DeathCause::light)), TreeEventKind::died));
   }
   if (!deaths.empty()) spdlog::info("age {}: {} trees died of light", stand_age_, deaths.size());
+  return deaths;
+}
+
+std::vector<TreeEvent> Stand::apply_mortality(std::uint64_t seed) {
+  std::vector<TreeEvent> deaths;
+  for (StandTree& tree : trees_) {
+    if (!tree.alive()) continue;
+    if (const auto cause = draw_mortality(tree.tree, seed))
+      deaths.push_back(end_of(tree, TreeStatus::dead, std::string(cause_code(*cause)), TreeEventKind::died));
+  }
+  if (!deaths.empty()) spdlog::info("age {}: {} trees died of suppression or background mortality", stand_age_, deaths.size());
   return deaths;
 }
 
@@ -100,13 +113,7 @@ std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {
   }
   std::vector<TreeEvent> removed;
   for (std::size_t chosen : select_for_thinning(event.rule, candidates, plot_area_ha_)) {
-    StandTree& tree = trees_[living[chosen]];
-    tree.status = TreeStatus::removed;
-    tree.status_changed_at_age = stand_age_;
-    tree.status_reason = event.reason;
-    tree.leaf_ball_light.clear();
-    removed.push_back({stand_age_, tree.id, tree.label, TreeEventKind::removed, event.reason,
-                       tree.tree.dbh_cm(), tree.tree.height_m(), tree.tree.stem_volume_m3()});
+    removed.push_back(end_of(trees_[living[chosen]], TreeStatus::removed, event.reason, TreeEventKind::removed));
   }
   const auto kept = std::count_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.is_protected; });
   if (kept > 0)

@@ -1,6 +1,7 @@
 #pragma once
-// The stand manager: every tree of the plantation, grown together one year at a time.
-// One simulated year (DESIGN.md): grow → light → (respond) → thin → metrics; data flows one way.
+// The stand manager: every tree of the plantation, grown together one year at a time. The steps of a simulated
+// year are methods here; stand/stand_year.hpp owns their order (grow → light → respond → soil → mortality →
+// thinning → metrics → write).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -30,21 +31,24 @@ class Stand {
   // Mutable access for per-tree hooks kept outside the stand (crown–root coupling, stand/root_zone.hpp).
   StandTree& tree_at(std::size_t index) { return trees_.at(index); }
 
-  // Every living tree grows one year; the stand ages by one.
+  // Step 1. Every living tree grows one year in last year's light; the stand ages by one.
   void grow_year();
-  // The light field of the whole stand: every living tree's leaf balls shade every other's.
-  // Returns the number of leaf balls lit.
-  std::size_t illuminate(LightSolver& solver);
-  // Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their light
-  // vector or die of shade; trees left without foliage die (cause "light"). Call after illuminate(); `solver`
-  // also lights each tree alone (the open-grown reference). Returns the deaths.
-  // `open_grown_solver` lights each tree alone (the reference its relative light is measured against).
-  std::vector<TreeEvent> respond_to_light(LightSolver& open_grown_solver, std::uint64_t seed);
-  // Thinnings scheduled for the current stand age. Returns the removals, in removal order.
+  // Step 2. The light field of the whole stand (every living tree's leaf balls shade every other's), and each
+  // tree's crown alone under the reference sky (`open_solver`; the open-grown reference). Every leaf ball's
+  // light, relative light (sky_scale × stand / open, at most 1) and light vector go onto its shoot, and each
+  // tree's light budget is summed. Returns the number of leaf balls lit in the stand.
+  std::size_t illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale = 1.0);
+  // Step 3. Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their
+  // light vector or die of shade; trees left without foliage die (cause "light"). Returns the deaths.
+  std::vector<TreeEvent> respond_to_light(std::uint64_t seed);
+  // Step 5. Suppression and background mortality (stand/mortality.hpp). Returns the deaths.
+  std::vector<TreeEvent> apply_mortality(std::uint64_t seed);
+  // Step 6. Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
  private:
   std::vector<TreeEvent> apply(const ScheduledThinning& event);
+  TreeEvent end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind);
 
   double plot_area_ha_;
   int stand_age_;

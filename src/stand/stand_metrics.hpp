@@ -1,10 +1,13 @@
 #pragma once
 // Stand-level forestry metrics of one output year: the rows of stand_table.csv (docs/formats.md).
+#include <array>
+#include <iterator>
 #include <span>
 #include <vector>
 
 #include "io/stand_snapshot.hpp"
 #include "io/tree_event.hpp"
+#include "stand/mortality.hpp"
 
 namespace heliostand {
 
@@ -43,7 +46,14 @@ struct StandTableRow {
   double removed_stems_per_ha = 0;           // removed (thinned) since the previous output row
   double removed_basal_area_m2_per_ha = 0;
   double removed_volume_m3_per_ha = 0;
-  double dead_stems_per_ha = 0;              // died since the previous output row
+  double dead_stems_per_ha = 0;              // died since the previous output row, all causes
+  double dead_basal_area_m2_per_ha = 0;
+  double dead_volume_m3_per_ha = 0;
+  // The same per cause of death, in all_death_causes order (stand/mortality.hpp: light, suppression, background).
+  struct Losses {
+    double stems_per_ha = 0, basal_area_m2_per_ha = 0, volume_m3_per_ha = 0;
+  };
+  std::array<Losses, std::size(all_death_causes)> dead_by_cause{};
 };
 
 // Living metrics from the snapshot's alive trees; removed_* and dead_* from `events_since_last_row`

@@ -2,11 +2,18 @@
 
 namespace heliostand {
 
+std::vector<LightSample> StandTree::leaf_ball_light() const {
+  std::vector<LightSample> samples;
+  for (const auto& foliage : tree.foliage_light()) samples.push_back({foliage.light, foliage.vector});
+  return samples;
+}
+
 double StandTree::mean_light() const {
-  if (leaf_ball_light.empty()) return 1.0;
+  const auto light = tree.foliage_light();
+  if (light.empty()) return 1.0;
   double sum = 0;
-  for (const auto& sample : leaf_ball_light) sum += sample.light;
-  return sum / static_cast<double>(leaf_ball_light.size());
+  for (const auto& sample : light) sum += sample.light;
+  return sum / static_cast<double>(light.size());
 }
 
 }  // namespace heliostand

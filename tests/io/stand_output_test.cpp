@@ -98,7 +98,7 @@ TEST_F(StandOutputRun, StandTableHasOneRowPerOutputYearWithFlowsSinceThePrevious
   }
   const auto rows = testing::parse_csv(read_text(root_ / "stand_table.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  ASSERT_EQ(rows[1].size(), 12u);
+  ASSERT_EQ(rows[1].size(), 23u);
   EXPECT_EQ(rows[1][0], "10");
   EXPECT_EQ(rows[1][2], "300.000");   // three living trees
   EXPECT_EQ(rows[1][8], "0.000");     // nothing removed before the first row

@@ -64,7 +64,8 @@ TEST(RootZone, CoupleHandsBranchToTheCrownAndRootToTheRoots) {
   zone.establish(stand);
   for (std::size_t i = 0; i < 2; ++i) {
     // Full light on every leaf ball.
-    stand.tree_at(i).leaf_ball_light.assign(stand.trees()[i].tree.leaf_balls().size(), LightSample{});
+    ConiferTree& tree = stand.tree_at(i).tree;
+    tree.set_foliage_light(std::vector<ConiferTree::FoliageLight>(tree.leaf_balls().size()));
   }
   zone.couple(stand);
   for (int id : {0, 1}) {

@@ -52,14 +52,14 @@ CoupledResult run_coupled(const CoupledExperiment& e) {
 
   RootZone zone(settings_for(e), plot, e.seed, e.sky_scale);
   zone.establish(stand);
-  stand.illuminate(*solver);
+  stand.illuminate(*solver, *solver, e.sky_scale);
   zone.couple(stand);
 
   CoupledResult result;
   int ratios = 0;
   for (int year = 1; year <= e.years; ++year) {
     stand.grow_year();
-    stand.illuminate(*solver);
+    stand.illuminate(*solver, *solver, e.sky_scale);
     zone.grow_year(stand);
     result.root_branches += new_roots_this_year(*zone.roots_of(0));
     if (const PathBalance* b = zone.balance_of(0)) {

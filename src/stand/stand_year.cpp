@@ -1,0 +1,54 @@
+#include "stand/stand_year.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace heliostand {
+
+StandYear::StandYear(Stand& stand, LightSolver& stand_solver, LightSolver& open_solver, RootZone* roots,
+                     StandOutput* output, StandYearSettings settings, StageClock& clock)
+    : stand_(stand),
+      stand_solver_(stand_solver),
+      open_solver_(open_solver),
+      roots_(roots),
+      output_(output),
+      settings_(settings),
+      clock_(clock),
+      snapshots_(output != nullptr && output->vtk() != nullptr) {}
+
+bool StandYear::is_output_year(int year) const {
+  return year == settings_.years || year % settings_.output_interval_years == 0;
+}
+
+StandYearResult StandYear::run(int year) {
+  StandYearResult result;
+  auto record = [&](std::vector<TreeEvent> events) {
+    if (output_) output_->record_events(events);
+    result.events.insert(result.events.end(), events.begin(), events.end());
+  };
+  // 1 grow
+  if (year > 0) clock_.time("growth", [&] { stand_.grow_year(); return 0; });
+  // 2 light
+  result.leaf_balls = clock_.time("light", [&] {
+    return stand_.illuminate(stand_solver_, open_solver_, settings_.sky_scale);
+  });
+  spdlog::debug("age {}: {} leaf balls lit", stand_.stand_age(), result.leaf_balls);
+  // 3 respond
+  if (year > 0) record(clock_.time("light response", [&] { return stand_.respond_to_light(settings_.seed); }));
+  // 4 soil
+  if (roots_) clock_.time("roots", [&] { year > 0 ? roots_->grow_year(stand_) : roots_->couple(stand_); return 0; });
+  // 5 mortality
+  if (year > 0) record(clock_.time("mortality", [&] { return stand_.apply_mortality(settings_.seed); }));
+  // 6 thinning
+  record(stand_.thin());
+  // 7 metrics, 8 write
+  if (output_ && is_output_year(year))
+    clock_.time("output", [&] {
+      StandSnapshot snapshot = snapshots_.take(stand_, year);
+      if (roots_) roots_->annotate(snapshot);
+      output_->write_year(snapshot);
+      return 0;
+    });
+  return result;
+}
+
+}  // namespace heliostand
