@@ -148,7 +148,6 @@ void ConiferTree::grow_diameter(double open_grown_height_m) {
 
 void ConiferTree::set_light_budget(double absorbed, double absorbed_open) {
   absorbed_light_ = absorbed;
-  relative_light_budget_ = absorbed_open > 0.0 ? std::min(1.0, absorbed / absorbed_open) : 0.0;
   if (reference_absorbed_light_ > 0.0 || absorbed_open <= 0.0) return;
   reference_absorbed_light_ = absorbed_open;
   const double next_height = height_m_ + (height_at(age_ + 1) - height_at(age_));

@@ -61,7 +61,6 @@ class ConiferTree {
   // alone; stand/stand_tree.hpp LightBudget): next year's basal-area increment follows it. The first call fixes
   // the reference: the crown as established, alone, makes the open-grown increment of eq. 2's taper.
   void set_light_budget(double absorbed, double absorbed_open);
-  double relative_light_budget() const { return relative_light_budget_; }
   // Radial increment at breast height of the last `years` years, mean in mm/year (suppression mortality).
   double recent_radial_growth_mm(int years) const;
   double last_dbh_increment_cm() const { return dbh_increments_cm_.empty() ? 0.0 : dbh_increments_cm_.back(); }
@@ -131,7 +130,6 @@ class ConiferTree {
   double dbh_cm_ = 0;
   double crown_base_floor_m_ = 0;
   bool light_driven_crown_ = false;
-  double relative_light_budget_ = 1.0;
   double absorbed_light_ = 0;              // this year's Σ foliage × light (m)
   double reference_absorbed_light_ = 0;    // the established crown alone (0: not set, taper-driven growth)
   double reference_increment_ = 0;         // its open-grown increment of DBH² (cm²), eq. 2's taper
