@@ -119,39 +119,55 @@ void ConiferTree::grow_year() {
 
 // Eq. 2's taper gives the open-grown tree's DBH for its height, so the open-grown increment of this tree is its own
 // DBH carried along the taper from one height to the next (in DBH², cm², proportional to basal area).
-double ConiferTree::open_grown_increment(double previous_height_m, double open_grown_height_m) const {
-  const double taper_before = StemTaper{previous_height_m, crown_base_m()}.dbh_cm(species_);
+double ConiferTree::open_grown_increment(double previous_height_m, double open_grown_height_m,
+                                         double crown_base_m) const {
+  const double taper_before = StemTaper{previous_height_m, crown_base_m}.dbh_cm(species_);
   if (dbh_cm_ <= 0.0 || taper_before <= 0.0) return 0.0;
-  const double open_dbh = dbh_cm_ * StemTaper{open_grown_height_m, crown_base_m()}.dbh_cm(species_) / taper_before;
+  const double open_dbh = dbh_cm_ * StemTaper{open_grown_height_m, crown_base_m}.dbh_cm(species_) / taper_before;
   return std::max(0.0, open_dbh * open_dbh - dbh_cm_ * dbh_cm_);
 }
 
 // The basal-area increment at breast height (docs/model.md "Growth from light"). Before any light field (a tree
-// grown alone to its survey age) it is the open-grown increment of the taper. In a stand it is light-use
-// efficiency on the pipe model: proportional to the light the crown absorbed, scaled so that the established
-// crown standing alone makes the taper's open-grown increment — a wider, brighter crown grows a thicker stem.
+// grown alone to its survey age) it is the open-grown increment of the taper, at the tree's own DBH. In a stand the
+// potential is the basal-area increment of the taper's tree of this height along this year's potential height
+// growth — what an open-grown stem of that height adds, whatever this stem's own history — times the response to
+// the tree's light share (pipe_model_share). A slender suppressed stem thus catches up when released, as long
+// as its crown carries the light.
 void ConiferTree::grow_diameter(double open_grown_height_m) {
   const double before = dbh_cm_;
   const double previous_height = shoots_[axes_[0].shoots.back()].base.z - stem_base_.z;  // this year's leader base
-  if (dbh_cm_ <= 0.0 || StemTaper{previous_height, crown_base_m()}.dbh_cm(species_) <= 0.0) {
+  const double crown_base = crown_base_m();
+  const double taper_before = StemTaper{previous_height, crown_base}.dbh_cm(species_);
+  if (dbh_cm_ <= 0.0 || taper_before <= 0.0) {
     // Passing breast height: the stem starts with the taper's diameter at its height.
-    dbh_cm_ = StemTaper{height_m_, crown_base_m()}.dbh_cm(species_);
+    dbh_cm_ = StemTaper{height_m_, crown_base}.dbh_cm(species_);
   } else if (reference_absorbed_light_ <= 0.0) {
-    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + open_grown_increment(previous_height, open_grown_height_m));
+    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + open_grown_increment(previous_height, open_grown_height_m, crown_base));
   } else {
-    const double share = std::min(absorbed_light_ / reference_absorbed_light_, 4.0);
-    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + reference_increment_ * diameter_response(species_, share));
+    const double taper_after = StemTaper{open_grown_height_m, crown_base}.dbh_cm(species_);
+    const double potential = std::max(0.0, taper_after * taper_after - taper_before * taper_before);
+    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + potential * diameter_response(species_, pipe_model_share()));
   }
   dbh_increments_cm_.push_back(dbh_cm_ - before);
   if (dbh_increments_cm_.size() > 10) dbh_increments_cm_.erase(dbh_increments_cm_.begin());
 }
 
+// The pipe model (Shinozaki et al. 1964): a stem's cross-section carries foliage in proportion to its area, so the
+// light a stem of this basal area should absorb to grow as in the open is the light its established crown absorbed
+// standing alone, scaled by basal area since then. The share is this year's absorbed light over that: below 1 for a
+// shaded crown or for one that has shrunk against its stem, above 1 (capped) for a crown that outgrew its stem.
+double ConiferTree::pipe_model_share() const {
+  constexpr double max_share = 2.0;
+  if (reference_absorbed_light_ <= 0.0 || reference_dbh_cm_ <= 0.0) return 1.0;
+  const double basal_area_ratio = (dbh_cm_ * dbh_cm_) / (reference_dbh_cm_ * reference_dbh_cm_);
+  return std::min(absorbed_light_ / (reference_absorbed_light_ * basal_area_ratio), max_share);
+}
+
 void ConiferTree::set_light_budget(double absorbed, double absorbed_open) {
   absorbed_light_ = absorbed;
-  if (reference_absorbed_light_ > 0.0 || absorbed_open <= 0.0) return;
+  if (reference_absorbed_light_ > 0.0 || absorbed_open <= 0.0 || dbh_cm_ <= 0.0) return;
   reference_absorbed_light_ = absorbed_open;
-  const double next_height = height_m_ + (height_at(age_ + 1) - height_at(age_));
-  reference_increment_ = open_grown_increment(height_m_, next_height);
+  reference_dbh_cm_ = dbh_cm_;
 }
 
 double ConiferTree::recent_radial_growth_mm(int years) const {

@@ -59,8 +59,14 @@ class ConiferTree {
   std::vector<FoliageLight> foliage_light() const;
   // The light the tree's foliage absorbed this year (Σ foliage amount × light, in the stand and with the tree
   // alone; stand/stand_tree.hpp LightBudget): next year's basal-area increment follows it. The first call fixes
-  // the reference: the crown as established, alone, makes the open-grown increment of eq. 2's taper.
+  // the reference: the crown as established, alone, is the foliage its stem's basal area carries (pipe model).
   void set_light_budget(double absorbed, double absorbed_open);
+  // This year's absorbed light over the pipe-model reference scaled to today's basal area (1 without a light field).
+  double pipe_model_share() const;
+  // The tree's DBH / eq. 2's DBH for its height and crown base (1 below 1.3 m): the stem is the taper scaled by it.
+  double stem_scale() const;
+  // The tree's calibrated site curve (eq. 1): the height a leader in full light reaches at `age`.
+  double height_at(int age) const;
   // Radial increment at breast height of the last `years` years, mean in mm/year (suppression mortality).
   double recent_radial_growth_mm(int years) const;
   double last_dbh_increment_cm() const { return dbh_increments_cm_.empty() ? 0.0 : dbh_increments_cm_.back(); }
@@ -99,10 +105,8 @@ class ConiferTree {
   const std::array<double, 8>& branching_bonus() const { return branching_bonus_; }
 
  private:
-  double height_at(int age) const;
-  double stem_scale() const;  // the tree's DBH / eq. 2's DBH for its height and crown base (1 below 1.3 m)
   void grow_diameter(double open_grown_height_m);
-  double open_grown_increment(double previous_height_m, double open_grown_height_m) const;
+  double open_grown_increment(double previous_height_m, double open_grown_height_m, double crown_base_m) const;
   double elongation_factor(int shoot_index) const;
   int add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip);
   int add_axis(int order, int parent_axis, double initial_elongation_m, double azimuth_rad);
@@ -132,7 +136,7 @@ class ConiferTree {
   bool light_driven_crown_ = false;
   double absorbed_light_ = 0;              // this year's Σ foliage × light (m)
   double reference_absorbed_light_ = 0;    // the established crown alone (0: not set, taper-driven growth)
-  double reference_increment_ = 0;         // its open-grown increment of DBH² (cm²), eq. 2's taper
+  double reference_dbh_cm_ = 0;            // the DBH when that reference was taken (pipe model)
   std::vector<double> dbh_increments_cm_;  // one per year grown (recent years at the back, at most 10)
   std::vector<Shoot> shoots_;
   std::vector<BranchAxis> axes_;  // axes_[0] is the stem

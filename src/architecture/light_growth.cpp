@@ -18,9 +18,8 @@ double height_response(const SpeciesParameters& species, double relative_light) 
   return light_response(relative_light, species.height_light_zero, species.height_light_saturation);
 }
 
-double diameter_response(const SpeciesParameters& species, double absorbed_share) {
-  const double c = std::clamp(species.diameter_light_compensation, 0.0, 0.99);
-  return std::pow(std::max((absorbed_share - c) / (1.0 - c), 0.0), species.diameter_light_exponent);
+double diameter_response(const SpeciesParameters& species, double pipe_model_share) {
+  return light_response(pipe_model_share, species.diameter_light_compensation, species.diameter_light_saturation);
 }
 
 }  // namespace heliostand

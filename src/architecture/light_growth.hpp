@@ -11,9 +11,8 @@ double light_response(double relative_light, double zero, double saturation);
 
 double elongation_response(const SpeciesParameters& species, double relative_light);
 double height_response(const SpeciesParameters& species, double relative_light);
-// The share of the reference basal-area increment a tree makes when its crown absorbs `absorbed_share` of the
-// light its established crown absorbed standing alone: ((share - compensation) / (1 - compensation)) ^ exponent,
-// 0 below the compensation share.
-double diameter_response(const SpeciesParameters& species, double absorbed_share);
+// The share of the taper's basal-area increment a tree makes at a pipe-model light share
+// (ConiferTree::pipe_model_share): 0 below diameter_light_compensation, linear to 1 at diameter_light_saturation.
+double diameter_response(const SpeciesParameters& species, double pipe_model_share);
 
 }  // namespace heliostand

@@ -101,27 +101,29 @@ struct SpeciesParameters {
   double elongation_light_saturation = 0.4;
   double height_light_zero = 0.05;
   double height_light_saturation = 0.5;
-  // Diameter: each year's basal-area increment at breast height = the open-grown increment of the seed's taper
-  // (eq. 2 scaled to the tree's own DBH) for the established crown alone, times (light the crown absorbs now /
-  // light the established crown absorbed alone) ^ exponent. 1 would be strict light-use efficiency; below 1,
-  // shaded foliage uses light more efficiently (shade needles), as measured light-response curves saturate.
-  double diameter_light_exponent = 0.5;
-  // The share of that reference light a crown must absorb before the stem thickens at all (the respiration of the
-  // living tissue comes first: LIGNUM's P - M); between it and 1 the response rises to 1 as
-  // ((share - compensation) / (1 - compensation)) ^ exponent.
+  // Diameter: each year's basal-area increment at breast height = the increment of the seed's taper (eq. 2, scaled
+  // to the tree's own DBH) along this year's potential height growth, times a response to the tree's pipe-model light
+  // share (ConiferTree::pipe_model_share: absorbed light over that of the established crown alone, per unit of
+  // basal area). Zero below the compensation share (the living tissue's respiration comes first: LIGNUM's P - M),
+  // linear to 1 at the saturation share. Eq. 2 was measured on co-dominant trees of closed stands, so the taper's
+  // increment belongs to a co-dominant's share, not an open-grown tree's: the saturation is the median share of
+  // the example survey's trees in their closed stand at the survey (0.27; quartiles 0.24-0.30; docs/model.md).
   double diameter_light_compensation = 0.05;
+  double diameter_light_saturation = 0.27;
   // First-order branches die of light once their tip's response has been zero (no elongation) this many years in
   // a row (bud death, LIGNUM); the growth-stop years of eq. 12 then only shape the crown before the survey.
   int branch_starved_years_to_death = 2;
   // Suppression mortality from recent radial growth G (mm/year, mean of `suppression_growth_years` years):
   // annual probability p = 1 - exp(-m1 exp(-m2 G)) (Kobe & Coates 1997's form, as SORTIE-ND's GMF mortality).
   double suppression_m1 = 0.5;
-  double suppression_m2 = 6.0;                  // per mm/year
+  double suppression_m2 = 5.0;                  // per mm/year
   int suppression_growth_years = 3;
   double background_mortality = 0.0;            // annual probability of death from any other cause (off)
-  // Reineke's maximum stand density index: stems/ha at a quadratic mean DBH of 25 cm on the self-thinning line
-  // (slope -1.605). Used to judge self-thinning (validation), not as a growth rule. docs/model.md gives the source.
-  double max_stand_density_index = 1500.0;
+  // Reineke's maximum stand density index: stems/ha at a quadratic mean DBH of 25.4 cm (10 in) on the
+  // self-thinning line (slope -1.605). 1618 = FVS's balsam fir (655 trees/acre; no value for Abies sachalinensis
+  // was found; docs/model.md). Crowding mortality holds a stand at self_thinning_limit of it (stand/mortality.hpp).
+  double max_stand_density_index = 1618.0;
+  double self_thinning_limit = 0.85;
 };
 
 }  // namespace heliostand

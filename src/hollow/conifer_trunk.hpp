@@ -1,6 +1,7 @@
 #pragma once
 // The stem of a simulated conifer as a surface for hollows and the `trunk` output block: the species'
-// own taper (seed 001 eq. 2, the same diameters the branches block and the DBH column use) with a root
+// own taper (seed 001 eq. 2) scaled to the tree's own DBH (`diameter_scale` = DBH / the taper's DBH, as
+// ConiferTree::stem_scale: the same diameters the branches block and the DBH column use) with a root
 // collar flare. Every tree of the stand gets its trunk from here, so a hollow is checked at load time
 // against the same surface it is later meshed on.
 #include "architecture/species.hpp"
@@ -12,6 +13,7 @@ namespace heliostand::hollow {
 // the DBH the tables report is kept). Not in the seeds; a typical collar shape for a pole-size conifer.
 inline constexpr Buttress conifer_root_collar{0.3, 0.3};
 
-TrunkSurface conifer_trunk(const SpeciesParameters& species, double tree_height_m, double crown_base_m);
+TrunkSurface conifer_trunk(const SpeciesParameters& species, double tree_height_m, double crown_base_m,
+                           double diameter_scale = 1.0);
 
 }  // namespace heliostand::hollow

@@ -13,7 +13,7 @@ namespace {
 using S = SpeciesParameters;
 
 // Every SpeciesParameters field except `name` (which is the table's key), with its allowed range.
-const std::array<ParameterField<S>, 51> species_fields{{
+const std::array<ParameterField<S>, 52> species_fields{{
     {"site_asymptote_m", &S::site_asymptote_m, positive()},
     {"height_k", &S::height_k, positive()},
     {"height_m", &S::height_m, {0.0, 1.0, false, true}},  // p = 1/(1-m) needs m < 1
@@ -57,14 +57,15 @@ const std::array<ParameterField<S>, 51> species_fields{{
     {"elongation_light_saturation", &S::elongation_light_saturation, between(0.0, 1.0)},
     {"height_light_zero", &S::height_light_zero, between(0.0, 1.0)},
     {"height_light_saturation", &S::height_light_saturation, between(0.0, 1.0)},
-    {"diameter_light_exponent", &S::diameter_light_exponent, positive()},
-    {"diameter_light_compensation", &S::diameter_light_compensation, {0.0, 1.0, true, false}},
+    {"diameter_light_compensation", &S::diameter_light_compensation, between(0.0, 1.0)},
+    {"diameter_light_saturation", &S::diameter_light_saturation, between(0.0, 1.0)},
     {"branch_starved_years_to_death", &S::branch_starved_years_to_death, between(1.0, 1000.0)},
     {"suppression_m1", &S::suppression_m1, non_negative()},
     {"suppression_m2", &S::suppression_m2, non_negative()},
     {"suppression_growth_years", &S::suppression_growth_years, between(1.0, 10.0)},
     {"background_mortality", &S::background_mortality, between(0.0, 1.0)},
     {"max_stand_density_index", &S::max_stand_density_index, positive()},
+    {"self_thinning_limit", &S::self_thinning_limit, {0.0, 1.0, true, false}},
 }};
 
 std::span<const ParameterField<S>> fields() { return species_fields; }

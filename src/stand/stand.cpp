@@ -88,7 +88,29 @@ std::vector<TreeEvent> Stand::apply_mortality(std::uint64_t seed) {
     if (const auto cause = draw_mortality(tree.tree, seed))
       deaths.push_back(end_of(tree, TreeStatus::dead, std::string(cause_code(*cause)), TreeEventKind::died));
   }
+  const auto crowded = die_of_crowding();
+  deaths.insert(deaths.end(), crowded.begin(), crowded.end());
   if (!deaths.empty()) spdlog::info("age {}: {} trees died of suppression or background mortality", stand_age_, deaths.size());
+  return deaths;
+}
+
+// Self-thinning at maximum density (stand/mortality.hpp): the least-growing trees die until the stand is back
+// under its species' density limit.
+std::vector<TreeEvent> Stand::die_of_crowding() {
+  std::vector<std::size_t> living;
+  std::vector<CrowdingCandidate> candidates;
+  for (std::size_t i = 0; i < trees_.size(); ++i) {
+    if (!trees_[i].alive()) continue;
+    const ConiferTree& tree = trees_[i].tree;
+    const SpeciesParameters& species = tree.species();
+    living.push_back(i);
+    candidates.push_back({tree.dbh_cm(), species.max_stand_density_index * species.self_thinning_limit,
+                          tree.recent_radial_growth_mm(species.suppression_growth_years)});
+  }
+  std::vector<TreeEvent> deaths;
+  for (std::size_t chosen : select_crowding_deaths(candidates, plot_area_ha_))
+    deaths.push_back(end_of(trees_[living[chosen]], TreeStatus::dead, std::string(cause_code(DeathCause::suppression)),
+                            TreeEventKind::died));
   return deaths;
 }
 

@@ -41,13 +41,15 @@ class Stand {
   // Step 3. Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their
   // light vector or die of shade; trees left without foliage die (cause "light"). Returns the deaths.
   std::vector<TreeEvent> respond_to_light(std::uint64_t seed);
-  // Step 5. Suppression and background mortality (stand/mortality.hpp). Returns the deaths.
+  // Step 5. Suppression (growth-based, then crowding above the density limit) and background mortality
+  // (stand/mortality.hpp). Returns the deaths.
   std::vector<TreeEvent> apply_mortality(std::uint64_t seed);
   // Step 6. Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
  private:
   std::vector<TreeEvent> apply(const ScheduledThinning& event);
+  std::vector<TreeEvent> die_of_crowding();
   TreeEvent end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind);
 
   double plot_area_ha_;

@@ -9,7 +9,7 @@ namespace heliostand {
 std::shared_ptr<const hollow::HollowMesh> trunk_mesh_of(const StandTree& stand_tree) {
   const ConiferTree& tree = stand_tree.tree;
   if (tree.height_m() <= 0.0) return nullptr;
-  const hollow::TrunkSurface trunk = hollow::conifer_trunk(tree.species(), tree.height_m(), tree.crown_base_m());
+  const hollow::TrunkSurface trunk = hollow::conifer_trunk(tree.species(), tree.height_m(), tree.crown_base_m(), tree.stem_scale());
   auto plain_stem = [&] {
     return std::make_shared<const hollow::HollowMesh>(hollow::build_trunk_mesh(trunk, plain_trunk_tolerance_m));
   };

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "architecture/stem_taper.hpp"
 #include "hollow/conifer_trunk.hpp"
 #include "hollow/hollow_mesh.hpp"
 
@@ -37,7 +38,10 @@ std::string user_name(const SurveyRecord& tree, std::size_t index) {
 std::vector<InputProblem> check_tree_hollows(const SurveyRecord& tree, const SpeciesParameters& species) {
   std::vector<InputProblem> problems;
   if (tree.hollows.empty()) return problems;
-  const hollow::TrunkSurface trunk = hollow::conifer_trunk(species, tree.height_m, tree.crown_base_m);
+  // The stem as the stand will start it: the species' taper scaled to the record's DBH (ConiferTree::stem_scale).
+  const double taper_dbh = StemTaper{tree.height_m, tree.crown_base_m}.dbh_cm(species);
+  const double scale = tree.dbh_cm > 0.0 && taper_dbh > 0.0 ? tree.dbh_cm / taper_dbh : 1.0;
+  const hollow::TrunkSurface trunk = hollow::conifer_trunk(species, tree.height_m, tree.crown_base_m, scale);
   std::vector<hollow::HollowSpec> specs;
   for (const auto& hollow : tree.hollows) specs.push_back(hollow.spec);
   const auto name_of = [&](std::size_t index) { return user_name(tree, index); };

@@ -3,6 +3,7 @@
 // stand's sky is the standard overcast one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -91,6 +92,7 @@ StandTree planted(int id, glm::dvec3 position, int age) {
 // start. The four centre trees' DBH increment and crown radius after 6 years are compared with the crowded stand.
 struct Block {
   double dbh_increment_cm = 0, crown_radius_m = 0, relative_light = 0;
+  std::vector<double> height_over_site_curve;  // every living tree's height / its calibrated curve at its age
 };
 Block grow_block(bool released) {
   std::vector<StandTree> trees;
@@ -118,6 +120,8 @@ Block grow_block(bool released) {
     block.crown_radius_m += tree.tree.crown_radius_m() / 4;
     block.relative_light += tree.light_budget.relative() / 4;
   }
+  for (const StandTree& tree : stand.trees())
+    if (tree.alive()) block.height_over_site_curve.push_back(tree.tree.height_m() / tree.tree.height_at(tree.tree.age()));
   return block;
 }
 
@@ -130,6 +134,18 @@ TEST(GrowthFromLight, ReleasedTreesThickenFasterAndWidenTheirCrowns) {
   EXPECT_GT(released.relative_light, crowded.relative_light);
   EXPECT_GT(released.dbh_increment_cm, 1.15 * crowded.dbh_increment_cm);
   EXPECT_GT(released.crown_radius_m, crowded.crown_radius_m);
+}
+
+// The leader follows the site curve times its light response: the dominant trees of the crowded block (the tallest
+// quarter) stay within 5 % of their calibrated curve after 6 years; a suppressed tree's falling behind is checked in
+// LightResponseStand.SuppressedTreeInADenseGroupFallsBehindButNotInTheOpen.
+TEST(GrowthFromLight, DominantTreesStayOnTheirSiteCurve) {
+  Block crowded = grow_block(false);
+  auto& ratios = crowded.height_over_site_curve;
+  ASSERT_EQ(ratios.size(), 16u);
+  std::sort(ratios.begin(), ratios.end());
+  std::cerr << "height / site curve after 6 years: lowest " << ratios.front() << ", highest " << ratios.back() << "\n";
+  for (std::size_t k = 12; k < 16; ++k) EXPECT_NEAR(ratios[k], 1.0, 0.05) << k;
 }
 
 TEST(GrowthFromLight, ATreeAloneHasRelativeLightOne) {
@@ -152,6 +168,19 @@ TEST(Mortality, SuppressionRisesAsRadialGrowthFalls) {
   EXPECT_GT(suppression_probability(species, 0.5), suppression_probability(species, 2.0));
   EXPECT_LT(suppression_probability(species, 2.0), 0.001);
   EXPECT_NEAR(suppression_probability(species, 0.0), 1.0 - std::exp(-species.suppression_m1), 1e-12);
+}
+
+// Crowding: above the density limit the least-growing trees die, and only as many as bring the stand back under it.
+TEST(Mortality, CrowdingTakesTheLeastGrowingTreesUntilTheStandIsUnderItsLimit) {
+  // Four 25.4-cm trees on 0.001 ha at a limit of 2 000 stems/ha: relative density 4 / 2 = 2, so two must die.
+  std::vector<CrowdingCandidate> trees{{25.4, 2000.0, 1.5}, {25.4, 2000.0, 0.2}, {25.4, 2000.0, 3.0},
+                                       {25.4, 2000.0, 0.4}};
+  EXPECT_NEAR(relative_density(trees, 0.001), 2.0, 1e-12);
+  EXPECT_EQ(select_crowding_deaths(trees, 0.001), (std::vector<std::size_t>{1, 3}));
+  // Under the limit nobody dies; trees below breast height (DBH 0) are no part of the density.
+  EXPECT_TRUE(select_crowding_deaths(trees, 0.002).empty());
+  trees.push_back({0.0, 2000.0, 0.0});
+  EXPECT_EQ(select_crowding_deaths(trees, 0.001), (std::vector<std::size_t>{1, 3}));
 }
 
 TEST(Mortality, BackgroundRateKillsAboutItsShare) {
