@@ -136,10 +136,13 @@ Finding gap_regrowth(const fs::path& source, const fs::path& out, int years, std
                           beside_neighbour, into_gap - beside_neighbour);
   }
   const double mean = neighbours ? sum_difference / neighbours : 0.0;
+  // 0.1 m in five years: less than one year's elongation of a lit Todomatsu branch (eqs. 7-10), so a crown that
+  // answers its light at all gets there; before growth followed light the mean was +0.06 m.
+  constexpr double min_mean_m = 0.10;
   Finding finding{fmt::format("gap regrowth: {} of {} gap neighbours reach further toward the gap than in the "
-                              "control; mean difference {:+.3f} m (expected: a majority, mean > 0)",
-                              further, neighbours, mean),
-                  neighbours > 0 && 2 * further > neighbours && mean > 0.0};
+                              "control; mean difference {:+.3f} m (expected: a majority, mean >= {:.2f} m)",
+                              further, neighbours, mean, min_mean_m),
+                  neighbours > 0 && 2 * further > neighbours && mean >= min_mean_m};
   report += fmt::format("\n{}\n\n", finding.text);
   return finding;
 }
