@@ -74,9 +74,7 @@ log=$log_dir/render.log
 display_file=$(mktemp)
 Xvfb -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp 3>"$display_file" 2>"$log_dir/xvfb.log" &
 xvfb_pid=$!
-# Wait for the server to be gone, not only signalled: a server still shutting down removes its socket late, and the
-# next render's Xvfb may already have taken the freed number (seen: "bad X server connection. DISPLAY=:0").
-trap 'kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null; rm -f "$display_file"' EXIT
+trap 'kill "$xvfb_pid" 2>/dev/null || true; rm -f "$display_file"' EXIT
 waited=0
 while [ ! -s "$display_file" ]; do
   kill -0 "$xvfb_pid" 2>/dev/null || { cat "$log_dir/xvfb.log" >&2; echo "error: Xvfb did not start" >&2; exit 1; }
