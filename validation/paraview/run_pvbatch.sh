@@ -1,12 +1,12 @@
 #!/bin/sh
-# Run a ParaView Python script with pvbatch, headless (its own Xvfb), then check the PNGs it wrote.
+# Run a ParaView Python script with pvbatch, headless (xvfb), then check the PNGs it wrote.
 #
 #   validation/paraview/run_pvbatch.sh SCRIPT.py LOG_DIR [ARG ...]
 #
 # The script gets the ARGs; it must print the path of every PNG it writes, one per line (those are
 # checked by check_png.py). Its output goes to LOG_DIR/render.log.
 #
-# Needs the Debian packages `paraview xvfb` (install paraview with --no-install-recommends:
+# Needs the Debian packages `paraview xvfb xauth` (install paraview with --no-install-recommends:
 # its recommended python3-paraview conflicts with libvtk9-dev, which the build needs). pvbatch's
 # Python modules come from python3-paraview, which this script therefore fetches with
 # `apt-get download` (same version as the installed paraview) and unpacks with `dpkg -x` into a
@@ -41,7 +41,8 @@ pvbatch=$(command -v "${HELIOSTAND_PVBATCH:-pvbatch}") ||
 # Resolve symlinks (/bin -> /usr/bin): pvbatch derives its Python path from its own location, and from
 # /bin it would pick up python3-vtk9's vtkmodules instead of ParaView's and crash.
 pvbatch=$(readlink -f "$pvbatch")
-command -v Xvfb >/dev/null 2>&1 || skip "Xvfb not found (apt-get install xvfb)"
+command -v xvfb-run >/dev/null 2>&1 || skip "xvfb-run not found (apt-get install xvfb xauth)"
+command -v xauth >/dev/null 2>&1 || skip "xauth not found (apt-get install xauth)"
 
 # pvbatch's Python side: the system one if python3-paraview happens to be installed, else a private copy.
 if [ -f /usr/lib/python3/dist-packages/paraview/simple.py ]; then
@@ -53,40 +54,21 @@ else
   if [ ! -f "$private/usr/lib/python3/dist-packages/paraview/simple.py" ]; then
     echo "setting up pvbatch's Python modules (python3-paraview $version) in $private" >&2
     work=$(mktemp -d)
+    trap 'rm -rf "$work"' EXIT
     (cd "$work" && apt-get download -q "python3-paraview=$version" >&2) ||
       skip "apt-get download python3-paraview=$version failed (no network or apt source?)"
     dpkg -x "$work"/python3-paraview_*.deb "$work/root"
     mkdir -p "$(dirname "$private")"
     rm -rf "$private"
     mv "$work/root" "$private"  # only a complete folder ever appears under the final name
-    rm -rf "$work"
   fi
   paraview_python=$private/usr/lib/python3/dist-packages
 fi
 
 mkdir -p "$log_dir"
 log=$log_dir/render.log
-
-# An X server of this render's own. Xvfb chooses a free display itself and writes its number to -displayfd only
-# once it accepts connections, so successive and concurrent renders cannot race for a display. (xvfb-run -a
-# guessed a number and slept: under load pvbatch met a server not yet up, or one still shutting down — "bad X
-# server connection. DISPLAY=:99".)
-display_file=$(mktemp)
-Xvfb -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp 3>"$display_file" 2>"$log_dir/xvfb.log" &
-xvfb_pid=$!
-trap 'kill "$xvfb_pid" 2>/dev/null || true; rm -f "$display_file"' EXIT
-waited=0
-while [ ! -s "$display_file" ]; do
-  kill -0 "$xvfb_pid" 2>/dev/null || { cat "$log_dir/xvfb.log" >&2; echo "error: Xvfb did not start" >&2; exit 1; }
-  waited=$((waited + 1))
-  [ "$waited" -le 600 ] || { echo "error: Xvfb gave no display within 60 s" >&2; exit 1; }
-  sleep 0.1
-done
-DISPLAY=:$(tr -d '[:space:]' < "$display_file")
-export DISPLAY
-
 PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
-  "$pvbatch" "$script" "$@" > "$log" 2>&1 || {
+  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$script" "$@" > "$log" 2>&1 || {
   cat "$log" >&2
   echo "error: pvbatch failed (log above, also in $log)" >&2
   exit 1
