@@ -67,12 +67,22 @@ fi
 
 mkdir -p "$log_dir"
 log=$log_dir/render.log
-PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
-  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$script" "$@" > "$log" 2>&1 || {
+# pvbatch sometimes cannot open the display xvfb-run gives it ("bad X server connection", within 2 s, before
+# anything is drawn; seen in CI under load, cause not found: issue 15). That start-up failure, and only that one,
+# is retried with a fresh server, at most 3 times in all; any other failure fails at once.
+attempt=1
+until PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
+  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$script" "$@" > "$log" 2>&1; do
+  if [ "$attempt" -lt 3 ] && grep -q "bad X server connection" "$log"; then
+    echo "warning: pvbatch could not open the X display (attempt $attempt of 3); retrying with a new server" >&2
+    attempt=$((attempt + 1))
+    sleep 2
+    continue
+  fi
   cat "$log" >&2
   echo "error: pvbatch failed (log above, also in $log)" >&2
   exit 1
-}
+done
 images=$(grep '\.png$' "$log" || true)
 [ -n "$images" ] || { cat "$log" >&2; echo "error: pvbatch wrote no image" >&2; exit 1; }
 # shellcheck disable=SC2086  # one image path per word; the paths are ours and have no spaces
