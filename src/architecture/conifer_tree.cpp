@@ -117,16 +117,6 @@ void ConiferTree::grow_year() {
   update_radii();
 }
 
-// Eq. 2's taper gives the open-grown tree's DBH for its height, so the open-grown increment of this tree is its own
-// DBH carried along the taper from one height to the next (in DBH², cm², proportional to basal area).
-double ConiferTree::open_grown_increment(double previous_height_m, double open_grown_height_m,
-                                         double crown_base_m) const {
-  const double taper_before = StemTaper{previous_height_m, crown_base_m}.dbh_cm(species_);
-  if (dbh_cm_ <= 0.0 || taper_before <= 0.0) return 0.0;
-  const double open_dbh = dbh_cm_ * StemTaper{open_grown_height_m, crown_base_m}.dbh_cm(species_) / taper_before;
-  return std::max(0.0, open_dbh * open_dbh - dbh_cm_ * dbh_cm_);
-}
-
 // The basal-area increment at breast height (docs/model.md "Growth from light"). Before any light field (a tree
 // grown alone to its survey age) it is the open-grown increment of the taper, at the tree's own DBH. In a stand the
 // potential is the basal-area increment of the taper's tree of this height along this year's potential height
@@ -141,12 +131,18 @@ void ConiferTree::grow_diameter(double open_grown_height_m) {
   if (dbh_cm_ <= 0.0 || taper_before <= 0.0) {
     // Passing breast height: the stem starts with the taper's diameter at its height.
     dbh_cm_ = StemTaper{height_m_, crown_base}.dbh_cm(species_);
-  } else if (reference_absorbed_light_ <= 0.0) {
-    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + open_grown_increment(previous_height, open_grown_height_m, crown_base));
   } else {
     const double taper_after = StemTaper{open_grown_height_m, crown_base}.dbh_cm(species_);
-    const double potential = std::max(0.0, taper_after * taper_after - taper_before * taper_before);
-    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + potential * diameter_response(species_, pipe_model_share()));
+    double increment = 0.0;  // in DBH² (cm²), proportional to basal area
+    if (reference_absorbed_light_ <= 0.0) {
+      // The tree's own DBH carried along the taper from one height to the next.
+      const double open_dbh = dbh_cm_ * taper_after / taper_before;
+      increment = std::max(0.0, open_dbh * open_dbh - dbh_cm_ * dbh_cm_);
+    } else {
+      const double potential = std::max(0.0, taper_after * taper_after - taper_before * taper_before);
+      increment = potential * diameter_response(species_, pipe_model_share());
+    }
+    dbh_cm_ = std::sqrt(dbh_cm_ * dbh_cm_ + increment);
   }
   dbh_increments_cm_.push_back(dbh_cm_ - before);
   if (dbh_increments_cm_.size() > 10) dbh_increments_cm_.erase(dbh_increments_cm_.begin());
@@ -178,9 +174,11 @@ double ConiferTree::recent_radial_growth_mm(int years) const {
   return 10.0 * sum / 2.0 / n;  // cm of diameter -> mm of radius
 }
 
-double ConiferTree::stem_scale() const {
-  const double taper = StemTaper{height_m_, crown_base_m()}.dbh_cm(species_);
-  return taper > 0.0 && dbh_cm_ > 0.0 ? dbh_cm_ / taper : 1.0;
+double ConiferTree::stem_scale() const { return stem_scale(StemTaper{height_m_, crown_base_m()}); }
+
+double ConiferTree::stem_scale(const StemTaper& taper) const {
+  const double taper_dbh = taper.dbh_cm(species_);
+  return taper_dbh > 0.0 && dbh_cm_ > 0.0 ? dbh_cm_ / taper_dbh : 1.0;
 }
 
 // The light response of the shoot an axis grows from: its tip's relative light of last year.
@@ -459,7 +457,7 @@ void ConiferTree::remove_flagged(std::vector<char> removed) {
 // the branch tip. Dead branches keep the radii they had when they died.
 void ConiferTree::update_radii() {
   const StemTaper taper{height_m(), crown_base_m()};
-  const double scale = stem_scale();
+  const double scale = stem_scale(taper);
   for (int s : axes_[0].shoots) {
     Shoot& shoot = shoots_[s];
     shoot.base_radius_m = 0.005 * scale * taper.diameter_cm(species_, shoot.base.z - stem_base_.z);
@@ -486,8 +484,9 @@ double ConiferTree::crown_base_m() const {
 }
 
 double ConiferTree::stem_volume_m3() const {
-  const double scale = stem_scale();
-  return scale * scale * StemTaper{height_m(), crown_base_m()}.volume_m3(species_);
+  const StemTaper taper{height_m(), crown_base_m()};
+  const double scale = stem_scale(taper);
+  return scale * scale * taper.volume_m3(species_);
 }
 
 bool ConiferTree::carries_foliage(const Shoot& shoot) const {

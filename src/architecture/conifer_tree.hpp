@@ -15,6 +15,8 @@
 
 namespace heliostand {
 
+struct StemTaper;
+
 // What calibration fits per tree (stand/calibration.hpp) on top of its species.
 struct TreeCalibration {
   double site_asymptote_m = 28.0;   // eq. 1 A: fitted so the height at survey age equals the surveyed height
@@ -106,8 +108,8 @@ class ConiferTree {
 
  private:
   void grow_diameter(double open_grown_height_m);
-  double open_grown_increment(double previous_height_m, double open_grown_height_m, double crown_base_m) const;
   double elongation_factor(int shoot_index) const;
+  double stem_scale(const StemTaper& taper) const;  // this tree's DBH over the taper's
   int add_shoot(int axis, int parent_shoot, glm::dvec3 base, glm::dvec3 tip);
   int add_axis(int order, int parent_axis, double initial_elongation_m, double azimuth_rad);
   void grow_stem(double height_growth_m);
