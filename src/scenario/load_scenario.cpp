@@ -67,6 +67,7 @@ void read_stand_survey(ScenarioDraft& draft, ScenarioProblems& problems) {
   Scenario& scenario = draft.scenario;
   SurveyReadOptions options;
   if (draft.plot_valid) options.plot = scenario.stand.plot;
+  options.format = scenario.stand.survey_format;
   // A bad stand age is reported already; a stand-in keeps every record from repeating it.
   options.stand_age_years = draft.age_valid ? scenario.stand.age_at_survey_years : 1;
   options.species = scenario.species;

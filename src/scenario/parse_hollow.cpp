@@ -67,7 +67,7 @@ void parse_one(const toml::table& table, const std::string& path, ScenarioDraft&
   if (auto azimuth = reader.number("azimuth_deg", any_number(), true)) hollow.spec.azimuth_deg = *azimuth;
   read_sizes(reader, hollow.spec);
   read_placement(reader, hollow.spec);
-  if (auto seed = reader.integer("seed", non_negative())) {
+  if (auto seed = reader.integer("seed", any_seed())) {
     hollow.spec.seed = static_cast<std::uint64_t>(*seed);
     hollow.seed_given = true;
   }

@@ -21,7 +21,7 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
     run.years = static_cast<int>(*years);
     draft.years_valid = true;
   }
-  if (auto seed = reader.integer("seed", non_negative())) run.seed = static_cast<std::uint64_t>(*seed);
+  if (auto seed = reader.integer("seed", any_seed())) run.seed = static_cast<std::uint64_t>(*seed);
   if (auto interval = reader.integer("output_interval", at_least(1))) run.output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {
     try {

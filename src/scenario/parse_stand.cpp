@@ -2,8 +2,76 @@
 
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
+#include "survey/read_survey.hpp"
 
 namespace heliostand::scenario_detail {
+
+namespace {
+// Coordinates in metres beyond this are not a plot on Earth (survey/plausible_limits.hpp, the UTM range).
+constexpr double max_coordinate_m = 1e7;
+
+// stand.survey_units = { dbh = "mm", height = "ft" }: a unit per survey column, by its canonical name.
+void parse_survey_units(const toml::node* node, SurveyFormat& format, ScenarioProblems& problems) {
+  if (!node) return;
+  const toml::table* units = as_table(node, "stand.survey_units", problems);
+  if (!units) return;
+  for (auto&& [key, value] : *units) {
+    const std::string path = fmt::format("stand.survey_units.{}", key.str());
+    const auto column = survey_column_by_name(key.str());
+    if (!column) {
+      std::vector<std::string_view> names;
+      for (const auto& info : survey_columns())
+        if (info.quantity != Quantity::none) names.push_back(info.name);
+      problems.add(key.source(), path, fmt::format("not a survey column with a unit (known: {})", fmt::join(names, ", ")));
+      continue;
+    }
+    const std::optional<std::string_view> unit = value.value<std::string_view>();
+    if (!unit) {
+      problems.add(value.source(), path, fmt::format("expected a unit as a string, got {}", toml_type_phrase(value)));
+      continue;
+    }
+    const Quantity quantity = survey_column_info(*column).quantity;
+    if (!unit_factor(quantity, *unit)) {
+      problems.add(value.source(), path,
+                   fmt::format("'{}' is not a unit of {} (accepted: {})", *unit, key.str(), accepted_units(quantity)));
+      continue;
+    }
+    format.units[*column] = std::string(*unit);
+  }
+}
+
+void parse_survey_format(TomlTableReader& reader, SurveyFormat& format) {
+  if (auto name = reader.string("survey_separator")) {
+    if (const auto separator = field_separator_named(*name)) format.separator = *separator;
+    else reader.problem("survey_separator",
+                        fmt::format("expected \"auto\", \"comma\", \"semicolon\" or \"tab\", got \"{}\"", *name));
+  }
+  if (auto name = reader.string("multi_stem")) {
+    if (const auto policy = multi_stem_policy_named(*name)) format.multi_stem = *policy;
+    else reader.problem("multi_stem", fmt::format("expected \"refuse\", \"separate\" or \"merge\", got \"{}\"", *name));
+  }
+  parse_survey_units(reader.node("survey_units"), format, reader.problems());
+}
+
+// The plot from the survey's stem positions, widened by the margin on every side.
+void plot_from_survey(TomlTableReader& reader, ScenarioDraft& draft, double margin_m) {
+  StandSettings& stand = draft.scenario.stand;
+  if (stand.survey_file.empty()) return;
+  const auto extent = survey_extent(stand.survey_file, stand.survey_format);
+  if (!extent) return;  // the survey's own problems are reported when it is read
+  const PlotBounds plot{extent->x_min - margin_m, extent->y_min - margin_m, extent->x_max + margin_m,
+                        extent->y_max + margin_m};
+  if (plot.width_m() <= 0.0 || plot.depth_m() <= 0.0) {
+    reader.problem("plot_margin_m", fmt::format("the trees stand on a line or a point ({:g} x {:g} m): give a margin "
+                                                "> 0 or the plot bounds",
+                                                extent->x_max - extent->x_min, extent->y_max - extent->y_min));
+    return;
+  }
+  stand.plot = plot;
+  stand.plot_margin_m = margin_m;
+  draft.plot_valid = true;
+}
+}  // namespace
 
 const toml::table* as_table(const toml::node* node, std::string_view key, ScenarioProblems& problems) {
   if (!node) return nullptr;
@@ -55,16 +123,27 @@ void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
       }
     }
   }
-  if (auto age = reader.integer("age_at_survey", at_least(1), true)) {
+  if (auto age = reader.integer("age_at_survey", between(1, 5000), true)) {
     stand.age_at_survey_years = static_cast<int>(*age);
     draft.age_valid = true;
   }
 
-  const auto x_min = reader.number("x_min", any_number(), true);
-  const auto y_min = reader.number("y_min", any_number(), true);
-  const auto x_max = reader.number("x_max", any_number(), true);
-  const auto y_max = reader.number("y_max", any_number(), true);
-  bool plot_ok = x_min && y_min && x_max && y_max;
+  parse_survey_format(reader, stand.survey_format);
+  const auto margin = reader.number("plot_margin_m", between(0.0, 1e4));
+  const bool from_survey = margin.has_value();
+  const NumberRange coordinate = between(-max_coordinate_m, max_coordinate_m);
+  const auto x_min = reader.number("x_min", coordinate, !from_survey);
+  const auto y_min = reader.number("y_min", coordinate, !from_survey);
+  const auto x_max = reader.number("x_max", coordinate, !from_survey);
+  const auto y_max = reader.number("y_max", coordinate, !from_survey);
+  if (from_survey) {
+    if (x_min || y_min || x_max || y_max)
+      reader.problem("plot_margin_m", "give either the plot bounds (x_min, y_min, x_max, y_max) or plot_margin_m, "
+                                      "not both");
+    else
+      plot_from_survey(reader, draft, *margin);
+  }
+  bool plot_ok = !from_survey && x_min && y_min && x_max && y_max;
   if (x_min && x_max && *x_max <= *x_min) {
     reader.problem("x_max", fmt::format("must be greater than x_min ({:g}), got {:g}", *x_min, *x_max));
     plot_ok = false;

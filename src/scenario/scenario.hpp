@@ -13,6 +13,7 @@
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
 #include "survey/plot_bounds.hpp"
+#include "survey/survey_format.hpp"
 #include "survey/survey.hpp"
 
 namespace heliostand {
@@ -20,8 +21,10 @@ namespace heliostand {
 struct StandSettings {
   std::filesystem::path survey_file;  // absolute
   int age_at_survey_years = 0;
-  PlotBounds plot;
+  PlotBounds plot;                    // given, or the survey's extent widened by plot_margin_m
+  std::optional<double> plot_margin_m;  // set when the plot is taken from the survey's stem positions
   std::string default_species;        // species of survey records that name none
+  SurveyFormat survey_format;         // separator, column units, multi-stemmed trees
 };
 
 struct RunSettings {

@@ -73,6 +73,12 @@ std::optional<double> TomlTableReader::number(std::string_view key, NumberRange 
     problem(key, fmt::format("expected {}, got {:g}", range.describe(std::isfinite(*value) ? "a number" : "a finite number"), *value));
     return std::nullopt;
   }
+  if (std::abs(*value) > largest_scenario_number) {
+    problem(key, fmt::format("{:g} is beyond {:g}, larger than any quantity of the model in its unit (a slip, or a "
+                             "value that would overflow the growth equations)",
+                             *value, largest_scenario_number));
+    return std::nullopt;
+  }
   return value;
 }
 
@@ -86,6 +92,12 @@ std::optional<std::int64_t> TomlTableReader::integer(std::string_view key, Numbe
   }
   if (!range.contains(static_cast<double>(*value))) {
     problem(key, fmt::format("expected {}, got {}", range.describe("an integer"), *value));
+    return std::nullopt;
+  }
+  if (range.overflow_guard && std::abs(*value) > largest_scenario_integer) {
+    problem(key, fmt::format("{} is beyond {}, larger than any count or age of the model (a slip, or a value that "
+                             "would overflow)",
+                             *value, largest_scenario_integer));
     return std::nullopt;
   }
   return value;

@@ -17,6 +17,7 @@ namespace heliostand {
 struct NumberRange {
   std::optional<double> min, max;
   bool min_exclusive = false, max_exclusive = false;
+  bool overflow_guard = true;  // refuse magnitudes beyond largest_scenario_integer (not for seeds)
 
   bool contains(double value) const;
   std::string describe(std::string_view what) const;  // "a number > 0", "an integer in [1, 10]"
@@ -27,6 +28,13 @@ inline NumberRange non_negative() { return {0.0, std::nullopt, false, false}; }
 inline NumberRange at_least(double min) { return {min, std::nullopt, false, false}; }
 inline NumberRange between(double min, double max) { return {min, max, false, false}; }
 inline NumberRange any_number() { return {}; }
+inline NumberRange any_seed() { return {0.0, std::nullopt, false, false, false}; }  // a random seed: any uint64
+
+// No scenario number may exceed these in magnitude, whatever its own range: every quantity of the model is far
+// smaller in its unit (heights in m, densities per ha, counts), and larger values overflow products in the
+// growth equations (a site asymptote of 1e308 m). Random seeds are exempt (any_seed()).
+constexpr double largest_scenario_number = 1e7;
+constexpr std::int64_t largest_scenario_integer = 1'000'000;  // NumberRange::overflow_guard
 
 // "a string", "an integer", ... for messages about wrong types.
 std::string toml_type_phrase(const toml::node& node);

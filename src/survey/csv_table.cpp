@@ -11,7 +11,8 @@ bool is_blank(const CsvRecord& record) {
 // Walks the text once; a small state machine over the characters of one record at a time.
 class CsvScanner {
  public:
-  CsvScanner(std::string_view text, const std::string& file) : text_(text), file_(file) {
+  CsvScanner(std::string_view text, const std::string& file, char separator)
+      : text_(text), file_(file), separator_(separator) {
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);
   }
 
@@ -47,7 +48,7 @@ class CsvScanner {
       }
       record.fields.push_back(std::move(field));
       if (at_end()) break;
-      if (peek() == ',') { ++pos_; continue; }
+      if (peek() == separator_) { ++pos_; continue; }
       if (take_line_break()) break;
       // Text after a closing quote: report once, then drop the rest of the line.
       if (!broken) problems.push_back({file_, record.line, "", "unexpected text after a closing quote"});
@@ -61,7 +62,7 @@ class CsvScanner {
 
   bool read_plain(std::string& field, int record_line, std::vector<InputProblem>& problems) {
     bool ok = true;
-    while (!at_end() && peek() != ',' && peek() != '\n' &&
+    while (!at_end() && peek() != separator_ && peek() != '\n' &&
            !(peek() == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n')) {
       if (peek() == '"' && ok) {
         problems.push_back({file_, record_line, "", "a quote inside an unquoted field (quote the whole field and double the inner quotes)"});
@@ -95,14 +96,15 @@ class CsvScanner {
 
   std::string_view text_;
   const std::string& file_;
+  char separator_;
   std::size_t pos_ = 0;
   int line_ = 1;
 };
 
 }  // namespace
 
-CsvTable parse_csv(std::string_view text, const std::string& file) {
-  return CsvScanner(text, file).scan();
+CsvTable parse_csv(std::string_view text, const std::string& file, char separator) {
+  return CsvScanner(text, file, separator).scan();
 }
 
 }  // namespace heliostand

@@ -20,9 +20,10 @@ struct CsvTable {
   std::vector<InputProblem> problems;  // quoting errors (record-level, no column)
 };
 
-// Splits `text` into records. Quoted fields may hold commas, doubled quotes and line breaks; a quote inside
+// Splits `text` into records at `separator` (comma, semicolon or tab; survey/field_separator.hpp). Quoted
+// fields may hold separators, doubled quotes and line breaks; a quote inside
 // an unquoted field, text after a closing quote, or an unterminated quote is a problem. CRLF and a leading
 // UTF-8 byte-order mark are accepted. `file` only labels problems.
-CsvTable parse_csv(std::string_view text, const std::string& file);
+CsvTable parse_csv(std::string_view text, const std::string& file, char separator = ',');
 
 }  // namespace heliostand

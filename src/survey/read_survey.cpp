@@ -16,6 +16,8 @@
 #include "survey/check_hollows.hpp"
 #include "survey/csv_table.hpp"
 #include "survey/hollow_cell.hpp"
+#include "survey/multi_stem.hpp"
+#include "survey/plausible_limits.hpp"
 #include "survey/strict_number.hpp"
 #include "survey/survey_columns.hpp"
 
@@ -23,8 +25,7 @@ namespace heliostand {
 
 namespace {
 
-constexpr double same_position_tolerance_m = 0.01;
-constexpr std::size_t column_count = 11;  // number of SurveyColumn values
+constexpr std::size_t column_count = survey_column_count;
 
 std::string read_whole_file(const std::filesystem::path& file, const std::string& label) {
   std::error_code ec;
@@ -45,10 +46,13 @@ std::string read_whole_file(const std::filesystem::path& file, const std::string
 struct ColumnLayout {
   std::array<int, column_count> index{};
   std::array<std::string, column_count> header_name{};
+  std::array<double, column_count> unit_factor{};  // file unit -> canonical unit
   std::size_t field_count = 0;
+  bool decimal_comma = false;  // ';'- or tab-separated: "12,5" is 12.5
 
   ColumnLayout() {
     index.fill(-1);
+    unit_factor.fill(1.0);
     for (const auto& info : survey_columns()) header_name[slot(info.column)] = std::string(info.name);
   }
   static std::size_t slot(SurveyColumn c) { return static_cast<std::size_t>(c); }
@@ -57,22 +61,50 @@ struct ColumnLayout {
 };
 
 std::string accepted_names(SurveyColumn column) {
-  const auto& aliases = survey_column_info(column).aliases;
-  return fmt::format("{}", fmt::join(aliases.begin(), aliases.end(), ", "));
+  const SurveyColumnInfo& info = survey_column_info(column);
+  const std::string names = fmt::format("{}", fmt::join(info.aliases.begin(), info.aliases.end(), ", "));
+  if (info.quantity == Quantity::none) return names;
+  return fmt::format("{}, each optionally with a unit: {}_{}", names, info.name, canonical_unit(info.quantity));
 }
 
-ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::vector<InputProblem>& problems,
-                         std::vector<std::string>& warnings) {
+// The factor from the column's unit — its header's suffix, or the scenario's survey_units — to the canonical
+// unit; a unit that does not fit the column, or a header and a scenario that disagree, is a problem.
+double column_unit_factor(const std::string& written, const NamedColumn& named, const SurveyFormat& format,
+                          const std::string& file, int line, std::vector<InputProblem>& problems) {
+  const SurveyColumnInfo& info = survey_column_info(named.column);
+  const auto scenario = format.units.find(named.column);
+  std::string unit = named.unit;
+  if (scenario != format.units.end()) {
+    if (!unit.empty() && unit != scenario->second) {
+      problems.push_back({file, line, written,
+                          fmt::format("the header says the unit is '{}' but the scenario's survey_units says '{}'",
+                                      unit, scenario->second)});
+      return 1.0;
+    }
+    unit = scenario->second;
+  }
+  if (unit.empty()) return 1.0;
+  if (const auto factor = unit_factor(info.quantity, unit)) return *factor;
+  problems.push_back({file, line, written,
+                      info.quantity == Quantity::none
+                          ? fmt::format("column '{}' has no unit, got '{}'", info.name, unit)
+                          : fmt::format("'{}' is not a unit of {} (accepted: {})", unit, info.name,
+                                        accepted_units(info.quantity))});
+  return 1.0;
+}
+
+ColumnLayout read_header(const CsvRecord& header, const std::string& file, const SurveyFormat& format,
+                         std::vector<InputProblem>& problems, std::vector<std::string>& warnings) {
   ColumnLayout layout;
   layout.field_count = header.fields.size();
   for (std::size_t i = 0; i < header.fields.size(); ++i) {
     const std::string written(trim_blanks(header.fields[i]));
-    const auto column = survey_column_named(written);
-    if (!column) {
+    const auto named = survey_column_named(written);
+    if (!named) {
       warnings.push_back(fmt::format("{}: column '{}' is not a survey column; ignored", file, written));
       continue;
     }
-    const auto slot = static_cast<std::size_t>(*column);
+    const auto slot = static_cast<std::size_t>(named->column);
     if (layout.index[slot] >= 0) {
       problems.push_back({file, header.line, written,
                           fmt::format("names the same column as '{}' (column {})", layout.header_name[slot],
@@ -81,6 +113,7 @@ ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::
     }
     layout.index[slot] = static_cast<int>(i);
     layout.header_name[slot] = written;
+    layout.unit_factor[slot] = column_unit_factor(written, *named, format, file, header.line, problems);
   }
   for (SurveyColumn required : {SurveyColumn::x, SurveyColumn::y}) {
     if (!layout.has(required)) {
@@ -94,6 +127,11 @@ ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::
                                     "{}; {})",
                                     accepted_names(SurveyColumn::height), accepted_names(SurveyColumn::dbh))});
   }
+  if (layout.has(SurveyColumn::crown_base) && layout.has(SurveyColumn::crown_ratio)) {
+    problems.push_back({file, header.line, layout.name(SurveyColumn::crown_ratio),
+                        fmt::format("give either a crown base ('{}') or a crown ratio column, not both",
+                                    layout.name(SurveyColumn::crown_base))});
+  }
   if (layout.has(SurveyColumn::crown_radius) && layout.has(SurveyColumn::crown_diameter)) {
     problems.push_back({file, header.line, layout.name(SurveyColumn::crown_diameter),
                         fmt::format("give either a crown radius ('{}') or a crown diameter column, not both",
@@ -106,7 +144,7 @@ ColumnLayout read_header(const CsvRecord& header, const std::string& file, std::
 struct RowValues {
   std::array<std::optional<double>, column_count> number;
   std::array<bool, column_count> bad{};  // the cell held something that is not an acceptable value
-  std::string id, species, hollow;
+  std::string id, species, hollow, life_stage;
   bool ok = true;
 };
 
@@ -124,6 +162,7 @@ class RowReader {
     if (layout_.has(SurveyColumn::id)) row.id = cell(SurveyColumn::id);
     if (layout_.has(SurveyColumn::species)) row.species = cell(SurveyColumn::species);
     if (layout_.has(SurveyColumn::hollow)) row.hollow = cell(SurveyColumn::hollow);
+    if (layout_.has(SurveyColumn::life_stage)) row.life_stage = normalise_header_name(cell(SurveyColumn::life_stage));
     number(SurveyColumn::x, Sign::any, true);
     number(SurveyColumn::y, Sign::any, true);
     number(SurveyColumn::height, Sign::positive, false);
@@ -132,6 +171,7 @@ class RowReader {
     number(SurveyColumn::crown_diameter, Sign::positive, false);
     number(SurveyColumn::crown_base, Sign::non_negative, false);
     number(SurveyColumn::age, Sign::positive, false);
+    number(SurveyColumn::crown_ratio, Sign::positive, false);
     return row;
   }
 
@@ -153,14 +193,28 @@ class RowReader {
       if (required) problem(column, "a value is required here (the cell is empty)");
       return;
     }
-    const auto value = parse_strict_number(text);
+    const auto value = parse_strict_number(layout_.decimal_comma ? with_decimal_point(text) : text);
     if (!value) return problem(column, fmt::format("expected a number, got \"{}\"", text));
     if (!std::isfinite(*value)) return problem(column, fmt::format("expected a finite number, got \"{}\"", text));
     if (sign == Sign::positive && *value <= 0)
       return problem(column, fmt::format("expected a number > 0, got \"{}\"", text));
     if (sign == Sign::non_negative && *value < 0)
       return problem(column, fmt::format("expected a number >= 0, got \"{}\"", text));
-    row_->number[static_cast<std::size_t>(column)] = *value;
+    const double converted = *value * layout_.unit_factor[static_cast<std::size_t>(column)];
+    if (const auto limit = plausible_limit(column); limit && std::abs(converted) > limit->max) {
+      const Quantity quantity = survey_column_info(column).quantity;
+      return problem(column, fmt::format("{:g} {} is beyond the plausible limit of {:g} {} ({})", converted,
+                                         canonical_unit(quantity), limit->max, canonical_unit(quantity), limit->why));
+    }
+    row_->number[static_cast<std::size_t>(column)] = converted;
+  }
+
+  // "12,5" -> "12.5": in a semicolon- or tab-separated file the comma is the decimal mark (European
+  // spreadsheets). Only a single comma in a cell without a point is read so; "1,234.5" stays an error.
+  static std::string with_decimal_point(std::string text) {
+    if (std::count(text.begin(), text.end(), ',') == 1 && text.find('.') == std::string::npos)
+      text[text.find(',')] = '.';
+    return text;
   }
 
   const ColumnLayout& layout_;
@@ -191,13 +245,17 @@ class SurveyBuilder {
     }
     RowReader reader(layout_, file_, problems_);
     RowValues row = reader.read(record);
+    if (skipped_for_life_stage(row, reader)) return;
     SurveyRecord tree;
     tree.line = record.line;
     complete(row, reader, tree);
-    if (row.ok) trees_.push_back(std::move(tree));
+    if (!row.ok) return;
+    note_slenderness(tree);
+    trees_.push_back(std::move(tree));
   }
 
   std::vector<SurveyRecord> take_trees() { return std::move(trees_); }
+  std::size_t skipped() const { return seedlings_ + dead_; }
 
   std::vector<std::string> warnings(std::size_t records) const {
     std::vector<std::string> out;
@@ -226,6 +284,19 @@ class SurveyBuilder {
                                 ? fmt::format("using the stand age at the survey, {:g} years", *options_.stand_age_years)
                                 : std::string("no stand age to use"));
     warn(SurveyColumn::species, fmt::format("using the default species '{}'", options_.default_species));
+    if (seedlings_ + dead_ > 0)
+      out.push_back(fmt::format("{}: column '{}': {} seedlings and {} snags or other dead stems skipped (seedlings' "
+                                "diameter is taken at 10 cm, not at breast height; dead stems are not grown)",
+                                file_, layout_.name(SurveyColumn::life_stage), seedlings_, dead_));
+    if (!slender_lines_.empty())
+      out.push_back(fmt::format("{}: {} trees taller than {:g} m have a height/DBH ratio outside [{:g}, {:g}] (lines "
+                                "{}{}): check the units of height and dbh",
+                                file_, slender_lines_.size(), slenderness_min_height_m, slenderness_min,
+                                slenderness_max,
+                                fmt::join(slender_lines_.begin(),
+                                          slender_lines_.begin() + std::min<std::size_t>(slender_lines_.size(), 5),
+                                          ", "),
+                                slender_lines_.size() > 5 ? ", ..." : ""));
     return out;
   }
 
@@ -237,6 +308,25 @@ class SurveyBuilder {
     static const SpeciesParameters todomatsu{};
     auto it = options_.species.find(name);
     return it == options_.species.end() ? todomatsu : it->second;
+  }
+
+  // SORTIE-ND tree maps list seedlings (diameter at 10 cm, not DBH) and snags with the living trees: neither is
+  // a tree heliostand can start as surveyed, so they are counted and left out.
+  bool skipped_for_life_stage(const RowValues& row, RowReader& reader) {
+    const std::string& stage = row.life_stage;
+    if (stage.empty() || stage == "sapling" || stage == "adult") return false;
+    if (stage == "seedling") return ++seedlings_, true;
+    if (stage == "snag" || stage == "stump" || stage == "woody_debris") return ++dead_, true;
+    reader.problem(C::life_stage, fmt::format("unknown life stage \"{}\" (known: seedling, sapling, adult, snag, "
+                                              "stump, woody_debris)",
+                                              stage));
+    return true;
+  }
+
+  void note_slenderness(const SurveyRecord& tree) {
+    if (tree.height_m <= slenderness_min_height_m || tree.dbh_cm <= 0) return;
+    const double slenderness = tree.height_m / (tree.dbh_cm / 100.0);
+    if (slenderness < slenderness_min || slenderness > slenderness_max) slender_lines_.push_back(tree.line);
   }
 
   // Fills the record from the row, imputing what is missing; every gap that cannot be filled is a problem.
@@ -347,6 +437,8 @@ class SurveyBuilder {
         reader.problem(C::crown_base, fmt::format("crown base {:g} m is not below the tree height {:g} m", *base,
                                                   tree.height_m));
       }
+    } else if (auto ratio = value(row, C::crown_ratio)) {
+      tree.crown_base_m = tree.height_m * (1.0 - *ratio);  // the live crown is `ratio` of the height
     } else {
       tree.crown_base_m = crown_base_from_height_m(tree.height_m, options_.allometry);
       tree.imputed.crown_base = true;
@@ -360,6 +452,8 @@ class SurveyBuilder {
   std::vector<InputProblem>& problems_;
   std::vector<SurveyRecord> trees_;
   ImputationTally tally_;
+  std::size_t seedlings_ = 0, dead_ = 0;
+  std::vector<int> slender_lines_;
 };
 
 void check_unique_ids(const std::vector<SurveyRecord>& trees, const std::string& file, const std::string& column,
@@ -374,34 +468,67 @@ void check_unique_ids(const std::vector<SurveyRecord>& trees, const std::string&
   }
 }
 
-// Two stems cannot share a planting position: a typing slip that would otherwise put two trees in one.
-void check_distinct_positions(const std::vector<SurveyRecord>& trees, const std::string& file,
-                              std::vector<InputProblem>& problems) {
-  std::vector<const SurveyRecord*> by_x;
-  for (const auto& tree : trees) by_x.push_back(&tree);
-  std::sort(by_x.begin(), by_x.end(), [](auto* a, auto* b) { return a->x_m < b->x_m || (a->x_m == b->x_m && a->line < b->line); });
-  std::vector<std::pair<int, int>> clashes;  // (later line, earlier line)
-  for (std::size_t i = 0; i < by_x.size(); ++i) {
-    for (std::size_t j = i + 1; j < by_x.size() && by_x[j]->x_m - by_x[i]->x_m <= same_position_tolerance_m; ++j) {
-      const double distance = std::hypot(by_x[j]->x_m - by_x[i]->x_m, by_x[j]->y_m - by_x[i]->y_m);
-      if (distance <= same_position_tolerance_m) {
-        clashes.emplace_back(std::max(by_x[i]->line, by_x[j]->line), std::min(by_x[i]->line, by_x[j]->line));
-      }
+// Two stems within 1 cm: by default a typing slip that would put two trees in one (refused, each pair named);
+// the scenario may declare them the stems of multi-stemmed trees, kept apart or merged (survey/multi_stem.hpp).
+void resolve_shared_positions(std::vector<SurveyRecord>& trees, MultiStemPolicy policy, const std::string& file,
+                              std::vector<InputProblem>& problems, std::vector<std::string>& warnings) {
+  const auto groups = stems_sharing_a_position(trees);
+  if (groups.empty()) return;
+  std::size_t stems = 0;
+  for (const auto& group : groups) stems += group.size();
+  if (policy == MultiStemPolicy::refuse) {
+    std::vector<std::pair<int, int>> clashes;  // (later line, earlier line)
+    for (const auto& group : groups)
+      for (std::size_t k = 1; k < group.size(); ++k) clashes.emplace_back(trees[group[k]].line, trees[group[k - 1]].line);
+    std::sort(clashes.begin(), clashes.end());
+    for (auto [line, other] : clashes)
+      problems.push_back({file, line, "x,y",
+                          fmt::format("stands within 1 cm of the tree on line {} (two trees at one position; set "
+                                      "stand.multi_stem if these are the stems of one tree)",
+                                      other)});
+    return;
+  }
+  if (policy == MultiStemPolicy::separate) {
+    warnings.push_back(fmt::format("{}: {} stems stand at {} shared positions; kept as separate trees (multi_stem = "
+                                   "\"separate\")",
+                                   file, stems, groups.size()));
+    return;
+  }
+  std::vector<char> merged_away(trees.size(), 0);
+  for (const auto& group : groups) {
+    std::vector<const SurveyRecord*> stems_of_tree;
+    for (std::size_t i : group) stems_of_tree.push_back(&trees[i]);
+    MergedStems merged = merge_stems(stems_of_tree);
+    if (!merged.tree) {
+      problems.push_back({file, trees[group.front()].line, "x,y", merged.problem});
+      continue;
     }
+    trees[group.front()] = std::move(*merged.tree);
+    for (std::size_t k = 1; k < group.size(); ++k) merged_away[group[k]] = 1;
   }
-  std::sort(clashes.begin(), clashes.end());
-  for (auto [line, other] : clashes) {
-    problems.push_back({file, line, "x,y",
-                        fmt::format("stands within 1 cm of the tree on line {} (two trees at one position)", other)});
-  }
+  std::vector<SurveyRecord> kept;
+  for (std::size_t i = 0; i < trees.size(); ++i)
+    if (!merged_away[i]) kept.push_back(std::move(trees[i]));
+  trees = std::move(kept);
+  warnings.push_back(fmt::format("{}: {} stems at {} shared positions merged into {} trees by basal area "
+                                 "(multi_stem = \"merge\")",
+                                 file, stems, groups.size(), groups.size()));
+}
+
+CsvTable read_table(const std::filesystem::path& file, const std::string& label, const SurveyFormat& format,
+                    bool& decimal_comma) {
+  const std::string text = read_whole_file(file, label);
+  const char separator = separator_char(format.separator, text);
+  decimal_comma = separator != ',';
+  return parse_csv(text, label, separator);
 }
 
 }  // namespace
 
 Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& options) {
   const std::string label = file.string();
-  const std::string text = read_whole_file(file, label);
-  CsvTable table = parse_csv(text, label);
+  bool decimal_comma = false;
+  CsvTable table = read_table(file, label, options.format, decimal_comma);
   std::vector<InputProblem> problems = std::move(table.problems);
   Survey survey;
   survey.file = file;
@@ -410,7 +537,8 @@ Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& o
     problems.push_back({label, 0, "", "the survey is empty (expected a header row and one row per tree)"});
     throw InputError(std::move(problems));
   }
-  const ColumnLayout layout = read_header(table.records.front(), label, problems, survey.warnings);
+  ColumnLayout layout = read_header(table.records.front(), label, options.format, problems, survey.warnings);
+  layout.decimal_comma = decimal_comma;
   if (!problems.empty()) throw InputError(std::move(problems));
   if (table.records.size() == 1) {
     problems.push_back({label, table.records.front().line, "", "no tree records after the header"});
@@ -421,15 +549,48 @@ Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& o
   for (std::size_t i = 1; i < table.records.size(); ++i) builder.add(table.records[i]);
   survey.trees = builder.take_trees();
   const std::string id_column = layout.name(SurveyColumn::id);
+  resolve_shared_positions(survey.trees, options.format.multi_stem, label, problems, survey.warnings);
   check_unique_ids(survey.trees, label, id_column, problems);
-  check_distinct_positions(survey.trees, label, problems);
   if (!problems.empty()) {
     std::stable_sort(problems.begin(), problems.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+    throw InputError(std::move(problems));
+  }
+  if (survey.trees.empty()) {
+    problems.push_back({label, 0, "", fmt::format("no tree to grow: all {} records were skipped", builder.skipped())});
     throw InputError(std::move(problems));
   }
   auto warnings = builder.warnings(table.records.size() - 1);
   survey.warnings.insert(survey.warnings.end(), warnings.begin(), warnings.end());
   return survey;
+}
+
+std::optional<PlotBounds> survey_extent(const std::filesystem::path& file, const SurveyFormat& format) {
+  try {
+    const std::string label = file.string();
+    bool decimal_comma = false;
+    const CsvTable table = read_table(file, label, format, decimal_comma);
+    if (table.records.size() < 2) return std::nullopt;
+    std::vector<InputProblem> problems;
+    std::vector<std::string> warnings;
+    ColumnLayout layout = read_header(table.records.front(), label, format, problems, warnings);
+    if (!problems.empty()) return std::nullopt;
+    layout.decimal_comma = decimal_comma;
+    std::optional<PlotBounds> extent;
+    for (std::size_t i = 1; i < table.records.size(); ++i) {
+      if (table.records[i].fields.size() != layout.field_count) continue;
+      RowReader reader(layout, label, problems);
+      const RowValues row = reader.read(table.records[i]);
+      const auto x = row.number[static_cast<std::size_t>(SurveyColumn::x)];
+      const auto y = row.number[static_cast<std::size_t>(SurveyColumn::y)];
+      if (!x || !y) continue;
+      if (!extent) extent = PlotBounds{*x, *y, *x, *y};
+      extent = PlotBounds{std::min(extent->x_min, *x), std::min(extent->y_min, *y), std::max(extent->x_max, *x),
+                          std::max(extent->y_max, *y)};
+    }
+    return extent;
+  } catch (const InputError&) {
+    return std::nullopt;  // read_survey() reports it
+  }
 }
 
 }  // namespace heliostand

@@ -225,6 +225,26 @@ TEST(GrowCli, BadSurveyIsRejectedBeforeAnyOutput) {
   EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
 }
 
+// The crash: a survey height of 1e308 m passed `check` and crashed `grow` with a segmentation fault.
+TEST(GrowCli, AnImpossibleSurveyHeightIsBadInputNotACrash) {
+  const auto stand = scratch_folder("huge_height_stand");
+  fs::create_directories(stand);
+  fs::copy_file(source_path("stands/tiny/scenario.toml"), stand / "scenario.toml");
+  std::string survey = read_text(source_path("stands/tiny/survey.csv"));
+  survey.replace(survey.find("9.2"), 3, "1e308");
+  std::ofstream(stand / "survey.csv") << survey;
+  const auto folder = scratch_folder("huge_height_out");
+  for (const std::string command : {"check", "grow"}) {
+    const auto run = run_cli(command + " " + (stand / "scenario.toml").string() +
+                             (command == "grow" ? " --out " + folder.string() : ""));
+    EXPECT_EQ(run.status, 2) << command << ": " << run.output;
+    EXPECT_NE(run.output.find("survey.csv:2: column 'height': 1e+308 m is beyond the plausible limit of 130 m"),
+              std::string::npos)
+        << command << ": " << run.output;
+  }
+  EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
+}
+
 TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
   const auto folder = scratch_folder("tiny_bad_device");
   const auto malformed = run_cli("grow " + tiny + " --out " + folder.string() + " --device gpu");

@@ -98,7 +98,7 @@ TEST(ScenarioErrors, BadPlotBoundsAndSurveyPath) {
               // The path is shown as the scenario's folder (stripped here) joined with the key's value.
               ElementsAre("scenario.toml:2: key 'stand.survey': survey file \"nothere.csv\" not found (paths are "
                           "relative to the scenario file)",
-                          "scenario.toml:3: key 'stand.age_at_survey': expected an integer >= 1, got 0",
+                          "scenario.toml:3: key 'stand.age_at_survey': expected an integer in [1, 5000], got 0",
                           "scenario.toml:6: key 'stand.x_max': must be greater than x_min (5), got 5",
                           "scenario.toml:7: key 'stand.y_max': must be greater than y_min (0), got -1"));
 }
@@ -205,8 +205,8 @@ TEST(BadStands, EveryProblemOfTheBadKeysScenario) {
   const std::string f = file.string();
   EXPECT_THAT(
       input_problems([&] { load_scenario(file); }),
-      ElementsAre(f + ":9: key 'stand.colour': unknown key (known keys here: age_at_survey, default_species, survey, "
-                      "x_max, x_min, y_max, y_min)",
+      ElementsAre(f + ":9: key 'stand.colour': unknown key (known keys here: age_at_survey, default_species, multi_stem, "
+                      "plot_margin_m, survey, survey_separator, survey_units, x_max, x_min, y_max, y_min)",
                   f + ":12: key 'run.years': expected an integer >= 1, got a string",
                   f + ":13: key 'run.seed': expected an integer >= 0, got -1",
                   f + ":14: key 'run.output_interval': expected an integer >= 1, got 0",
@@ -230,7 +230,8 @@ TEST(BadStands, EveryProblemOfTheBadSurvey) {
                           f + ":4: column 'height': expected a number > 0, got \"-3\"",
                           f + ":5: column 'id': duplicate id \"1\" (first used on line 2)",
                           f + ":6: column 'x': 12 is outside the plot (x from 0 to 10 m)",
-                          f + ":7: column 'x,y': stands within 1 cm of the tree on line 2 (two trees at one position)",
+                          f + ":7: column 'x,y': stands within 1 cm of the tree on line 2 (two trees at one position; set "
+                          "stand.multi_stem if these are the stems of one tree)",
                           f + ":8: expected 7 fields (as in the header), got 5",
                           f + ":9: column 'dbh': expected a finite number, got \"nan\"",
                           f + ":9: column 'crown_base': crown base 9 m is not below the tree height 8.4 m"));
@@ -239,10 +240,10 @@ TEST(BadStands, EveryProblemOfTheBadSurvey) {
 TEST(BadStands, SurveyWithoutPositionOrSizeColumns) {
   const auto file = (stands / "bad" / "survey_missing_columns.csv").string();
   EXPECT_THAT(input_problems([&] { read_survey(file); }),
-              ElementsAre(file + ":1: column 'y': required column missing (accepted names: y, y_m, pos_y, position_y)",
+              ElementsAre(file + ":1: column 'y': required column missing (accepted names: y, pos_y, position_y, y_coord, gy, each optionally with a unit: y_m)",
                           file + ":1: column 'height': neither a height nor a dbh column; one of them is required "
-                                 "(accepted names: height, height_m, h, h_m, ht, tree_height; dbh, dbh_cm, d, d_cm, "
-                                 "d13, diameter)"));
+                                 "(accepted names: height, h, ht, tree_height, each optionally with a unit: height_m; dbh, d, d13, "
+                                 "diameter, diam, bhd, each optionally with a unit: dbh_cm)"));
 }
 
 }  // namespace

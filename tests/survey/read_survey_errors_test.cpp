@@ -41,11 +41,11 @@ TEST(ReadSurveyErrors, EmptyFileAndHeaderOnly) {
 
 TEST(ReadSurveyErrors, MissingRequiredColumns) {
   EXPECT_THAT(problems_of("id,x_m,dbh\n1,2,20\n"),
-              ElementsAre("s.csv:1: column 'y': required column missing (accepted names: y, y_m, pos_y, position_y)"));
+              ElementsAre("s.csv:1: column 'y': required column missing (accepted names: y, pos_y, position_y, y_coord, gy, each optionally with a unit: y_m)"));
   EXPECT_THAT(problems_of("x,y,crown_radius\n1,2,1.5\n"),
               ElementsAre("s.csv:1: column 'height': neither a height nor a dbh column; one of them is required "
-                          "(accepted names: height, height_m, h, h_m, ht, tree_height; dbh, dbh_cm, d, d_cm, d13, "
-                          "diameter)"));
+                          "(accepted names: height, h, ht, tree_height, each optionally with a unit: height_m; dbh, d, d13, "
+                          "diameter, diam, bhd, each optionally with a unit: dbh_cm)"));
 }
 
 TEST(ReadSurveyErrors, TwoHeadersForOneColumn) {
@@ -107,7 +107,8 @@ TEST(ReadSurveyErrors, TreesOutsideThePlot) {
 TEST(ReadSurveyErrors, TwoTreesAtOnePosition) {
   // 0.6 cm apart is one position; 2 cm apart are two trees.
   EXPECT_THAT(problems_of("x,y,h\n5,5,15\n8,8,15\n5.006,5,15\n8,8.02,15\n"),
-              ElementsAre("s.csv:4: column 'x,y': stands within 1 cm of the tree on line 2 (two trees at one position)"));
+              ElementsAre("s.csv:4: column 'x,y': stands within 1 cm of the tree on line 2 (two trees at one position; set "
+                          "stand.multi_stem if these are the stems of one tree)"));
 }
 
 TEST(ReadSurveyErrors, WrongNumberOfFields) {
@@ -133,7 +134,7 @@ TEST(ReadSurveyErrors, ListsEveryProblemInLineOrder) {
                                  "s.csv:3: column 'x': 40 is outside the plot (x from 0 to 30 m)",
                                  "s.csv:4: column 'dbh': expected a number > 0, got \"-2\"",
                                  "s.csv:5: column 'x,y': stands within 1 cm of the tree on line 2 (two trees at one "
-                                 "position)"));
+                                 "position; set stand.multi_stem if these are the stems of one tree)"));
 }
 
 }  // namespace
