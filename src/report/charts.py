@@ -39,6 +39,7 @@ def new_chart(title, ylabel, xlabel="stand age (years)"):
     axes.set_xlabel(xlabel)
     axes.set_ylabel(ylabel)
     axes.grid(True, color="#dddddd", linewidth=0.6)
+    axes.set_axisbelow(True)  # grid lines behind the bars, not across them
     return figure, axes
 
 

@@ -21,7 +21,8 @@ import os
 import shutil
 import sys
 
-from run_data import RunInputError, read_run
+sys.dont_write_bytecode = True  # it runs from the source tree: leave no __pycache__ there
+from run_data import RunInputError, read_run  # noqa: E402 (after the line above)
 
 REPORT_MARKER = ".heliostand-report"
 
