@@ -42,6 +42,7 @@ int run(int argc, char** argv) {
   add_check_command(app, status);
   add_grow_command(app, status);
   add_kanamaru_command(app, status);
+  add_report_command(app, status);
   add_devices_command(app);
   add_bench_command(app);
 
