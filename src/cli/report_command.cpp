@@ -29,11 +29,13 @@ struct ReportArguments {
   std::vector<std::string> labels;
 };
 
-// Where several Python 3 are installed (pyenv, a virtual environment), the one on PATH may lack Debian's
-// python3-matplotlib; HELIOSTAND_PYTHON names the one to use.
+// Debian's python3-matplotlib installs for /usr/bin/python3; where several Python 3 are installed (pyenv, a
+// virtual environment) the one first on PATH may lack it. HELIOSTAND_PYTHON names another to use.
 std::string python_interpreter() {
   const char* chosen = std::getenv("HELIOSTAND_PYTHON");
-  return chosen != nullptr && *chosen != '\0' ? chosen : "python3";
+  if (chosen != nullptr && *chosen != '\0') return chosen;
+  std::error_code ec;
+  return std::filesystem::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
 }
 
 std::vector<std::string> script_command(const ReportArguments& arguments) {
