@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/csv_test_reader.hpp"
 #include "io/stand_tables.hpp"
@@ -44,6 +45,17 @@ TEST(CsvWriter, RowsJoinFieldsWithCommasAndEndWithNewline) {
   csv.integer(7).text("X,1").number(12.345, 1).end_row();
   csv.integer(-3).text("").number(std::numeric_limits<double>::quiet_NaN(), 1).end_row();
   EXPECT_EQ(out.str(), "id,label,dbh_cm\n7,\"X,1\",12.3\n-3,,\n");
+}
+
+TEST(CsvWriter, ARowWithMoreOrFewerFieldsThanItsHeaderIsRefused) {
+  std::ostringstream out;
+  CsvWriter csv(out);
+  csv.header({"id", "dbh_cm"});
+  csv.integer(1).number(12.0, 1).end_row();
+  EXPECT_THROW(csv.integer(2).end_row(), std::logic_error);
+  CsvWriter again(out);
+  again.header({"id", "dbh_cm"});
+  EXPECT_THROW(again.integer(3).number(1.0, 1).number(2.0, 1).end_row(), std::logic_error);
 }
 
 TEST(CsvWriter, AwkwardTextSurvivesARoundTrip) {
