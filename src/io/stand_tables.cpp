@@ -87,8 +87,10 @@ const std::vector<OutputColumn>& events_columns() {
       {"stand_age", "years", "stand age in the year of the event"},
       {"tree_id", "–", "tree identifier"},
       {"label", "–", "survey id"},
+      {"species", "–", "the tree's species"},
       {"event", "–", "removed (thinning) or died (mortality)"},
-      {"reason", "–", "the thinning's reason or the cause of death"},
+      {"cause", "–", "code: thinning, or the cause of death (light, suppression, background)"},
+      {"reason", "–", "label: the scenario's reason for a thinning, the cause code again for a death"},
       {"dbh_cm", "cm", "DBH at the event"},
       {"height_m", "m", "height at the event"},
       {"volume_m3", "m³", "stem volume at the event"},
@@ -156,7 +158,9 @@ void write_event_row(CsvWriter& csv, const TreeEvent& event) {
   csv.integer(event.stand_age)
       .integer(event.tree_id)
       .text(event.label)
+      .text(event.species)
       .text(to_string(event.kind))
+      .text(event.cause)
       .text(event.reason)
       .number(event.dbh_cm, kCentimetres)
       .number(event.height_m, kMetres)

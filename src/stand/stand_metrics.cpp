@@ -85,7 +85,7 @@ StandTableRow stand_table_row(const StandSnapshot& snapshot, double plot_area_m2
       row.dead_basal_area_m2_per_ha += basal_area_m2(event.dbh_cm) / area_ha;
       row.dead_volume_m3_per_ha += event.volume_m3 / area_ha;
       for (std::size_t c = 0; c < std::size(all_death_causes); ++c)
-        if (event.reason == cause_code(all_death_causes[c])) {
+        if (event.cause == cause_code(all_death_causes[c])) {
           row.dead_by_cause[c].stems_per_ha += 1.0 / area_ha;
           row.dead_by_cause[c].basal_area_m2_per_ha += basal_area_m2(event.dbh_cm) / area_ha;
           row.dead_by_cause[c].volume_m3_per_ha += event.volume_m3 / area_ha;

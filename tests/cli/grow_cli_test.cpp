@@ -78,6 +78,9 @@ void check_thinning(const fs::path& folder) {
   EXPECT_EQ(events[0].at("label"), "4");
   EXPECT_EQ(events[0].at("stand_age"), "23");
   EXPECT_EQ(events[0].at("event"), "removed");
+  EXPECT_EQ(events[0].at("species"), "todomatsu");
+  EXPECT_EQ(events[0].at("cause"), "thinning") << "the code, whatever the scenario calls the thinning";
+  EXPECT_EQ(events[0].at("reason"), "test removal") << "the scenario's label beside the code";
   for (const auto& row : read_table(folder / "trees.csv"))
     EXPECT_EQ(row.at("habitat_tree"), row.at("label") == "5" ? "1" : "0") << "tree " << row.at("label");
 

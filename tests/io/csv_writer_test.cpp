@@ -94,18 +94,20 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
                                                   "volume_m3", "leaf_balls", "mean_light", "light_budget",
                                                   "relative_light", "dbh_increment_cm", "root_length_m",
                                                   "root_max_depth_m", "root_uptake"}));
-  EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "event", "reason", "dbh_cm",
-                                                  "height_m", "volume_m3"}));
+  EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "species", "event", "cause",
+                                                  "reason", "dbh_cm", "height_m", "volume_m3"}));
 }
 
-TEST(StandTables, EventRowCarriesKindReasonAndQuotedLabel) {
+TEST(StandTables, EventRowCarriesSpeciesKindCauseCodeReasonLabelAndQuotedTexts) {
   std::ostringstream out;
   CsvWriter csv(out);
-  write_event_row(csv, {45, 12, "P3,12", TreeEventKind::removed, "thinning:low", 23.456, 18.2, 0.41234});
-  write_event_row(csv, {46, 13, "P3-13", TreeEventKind::died, "suppression", 8.0, 9.0, 0.02});
+  write_event_row(csv, {45, 12, "P3,12", "todomatsu", TreeEventKind::removed, "thinning", "first thinning, from below",
+                        23.456, 18.2, 0.41234});
+  write_event_row(csv, {46, 13, "P3-13", "karamatsu", TreeEventKind::died, "suppression", "suppression", 8.0, 9.0,
+                        0.02});
   EXPECT_EQ(out.str(),
-            "45,12,\"P3,12\",removed,thinning:low,23.46,18.200,0.4123\n"
-            "46,13,P3-13,died,suppression,8.00,9.000,0.0200\n");
+            "45,12,\"P3,12\",todomatsu,removed,thinning,\"first thinning, from below\",23.46,18.200,0.4123\n"
+            "46,13,P3-13,karamatsu,died,suppression,suppression,8.00,9.000,0.0200\n");
 }
 
 }  // namespace

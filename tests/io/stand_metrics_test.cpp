@@ -65,9 +65,9 @@ TEST(StandTableRow, CountsOnlyLivingTreesAndTurnsEventsIntoPerHectareFlows) {
   snapshot.trees = {tree_with(20, 15, 0.25), tree_with(30, 20, 0.75), tree_with(12, 9, 0.05, TreeStatus::dead),
                     tree_with(40, 22, 1.5, TreeStatus::removed)};
   const std::vector<TreeEvent> events = {
-      {35, 4, "t4", TreeEventKind::removed, "thinning", 40, 22, 1.5},
-      {34, 5, "t5", TreeEventKind::removed, "thinning", 20, 15, 0.5},
-      {35, 3, "t3", TreeEventKind::died, "suppression", 12, 9, 0.05},
+      {35, 4, "t4", "todomatsu", TreeEventKind::removed, "thinning", "thinning", 40, 22, 1.5},
+      {34, 5, "t5", "todomatsu", TreeEventKind::removed, "thinning", "thinning", 20, 15, 0.5},
+      {35, 3, "t3", "todomatsu", TreeEventKind::died, "suppression", "suppression", 12, 9, 0.05},
   };
   const StandTableRow row = stand_table_row(snapshot, 500.0, events);  // 500 m² = 0.05 ha
   EXPECT_EQ(row.stand_age, 35);

@@ -51,8 +51,8 @@ class StandOutputRun : public ::testing::Test {
     const auto first = testing::make_synthetic_stand(10, 0);
     out.write_year(first.snapshot);
     const std::vector<TreeEvent> events = {
-        {12, 2, "A,2", TreeEventKind::removed, "thinning:low", 20.0, 14.0, 0.2},
-        {14, 3, "B \"3\"", TreeEventKind::died, "suppression", 8.0, 6.0, 0.05},
+        {12, 2, "A,2", "todomatsu", TreeEventKind::removed, "thinning", "thinning:low", 20.0, 14.0, 0.2},
+        {14, 3, "B \"3\"", "todomatsu", TreeEventKind::died, "suppression", "suppression", 8.0, 6.0, 0.05},
     };
     out.record_events(events);
     auto second = testing::make_synthetic_stand(15, 5);
@@ -130,9 +130,10 @@ TEST_F(StandOutputRun, TreesAndEventsTablesRoundTripTheirLabels) {
   EXPECT_EQ(trees[1][age], "12") << "a whole number of years (the synthetic tree of height 6 is 12 years old)";
   const auto events = testing::parse_csv(read_text(root_ / "events.csv"));
   ASSERT_EQ(events.size(), 3u);
-  EXPECT_EQ(events[1], (std::vector<std::string>{"12", "2", "A,2", "removed", "thinning:low", "20.00", "14.000",
-                                                 "0.2000"}));
-  EXPECT_EQ(events[2][3], "died");
+  EXPECT_EQ(events[1], (std::vector<std::string>{"12", "2", "A,2", "todomatsu", "removed", "thinning",
+                                                 "thinning:low", "20.00", "14.000", "0.2000"}));
+  EXPECT_EQ(events[2][4], "died");
+  EXPECT_EQ(events[2][5], "suppression");
 }
 
 TEST_F(StandOutputRun, AnAbortedRunKeepsItsTablesButHasNoRunJson) {

@@ -202,9 +202,10 @@ TEST(Mortality, BackgroundRateKillsAboutItsShare) {
 TEST(StandTable, DeathsAreCountedByCause) {
   StandSnapshot snapshot;
   snapshot.stand_age = 50;
-  const std::vector<TreeEvent> events{{50, 1, "a", TreeEventKind::died, "suppression", 20.0, 15.0, 0.3},
-                                      {50, 2, "b", TreeEventKind::died, "light", 10.0, 8.0, 0.05},
-                                      {50, 3, "c", TreeEventKind::removed, "first thinning", 30.0, 18.0, 0.6}};
+  const std::vector<TreeEvent> events{
+      {50, 1, "a", "todomatsu", TreeEventKind::died, "suppression", "suppression", 20.0, 15.0, 0.3},
+      {50, 2, "b", "todomatsu", TreeEventKind::died, "light", "light", 10.0, 8.0, 0.05},
+      {50, 3, "c", "todomatsu", TreeEventKind::removed, "thinning", "first thinning", 30.0, 18.0, 0.6}};
   const StandTableRow row = stand_table_row(snapshot, 10000.0, events);
   EXPECT_DOUBLE_EQ(row.dead_stems_per_ha, 2.0);
   EXPECT_NEAR(row.dead_basal_area_m2_per_ha, M_PI * (0.1 * 0.1 + 0.05 * 0.05), 1e-12);
