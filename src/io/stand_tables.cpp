@@ -32,8 +32,9 @@ std::vector<OutputColumn> declare_stand_table_columns() {
       {"year_index", "–", "simulated year of the run, from 0"},
       {"stems_per_ha", "1/ha", "living stems per hectare"},
       {"basal_area_m2_per_ha", "m²/ha", "basal area of the living stems"},
-      {"qmd_cm", "cm", "quadratic mean diameter of the living stems"},
+      {"qmd_cm", "cm", "Dg, quadratic mean diameter of the living stems"},
       {"mean_height_m", "m", "arithmetic mean height of the living stems"},
+      {"hg_m", "m", "Hg, Lorey's height: mean height of the living stems weighted by basal area"},
       {"top_height_m", "m", "mean height of the 100 largest-DBH living trees per hectare"},
       {"volume_m3_per_ha", "m³/ha", "stem volume of the living trees"},
       {"removed_stems_per_ha", "1/ha", "stems removed by thinning since the previous row"},
@@ -107,6 +108,7 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
       .number(row.living.basal_area_m2_per_ha, kPerHectare)
       .number(row.living.qmd_cm, kCentimetres)
       .number(row.living.mean_height_m, kMetres)
+      .number(row.living.hg_m, kMetres)
       .number(row.living.top_height_m, kMetres)
       .number(row.living.volume_m3_per_ha, kPerHectare)
       .number(row.removed_stems_per_ha, kPerHectare)

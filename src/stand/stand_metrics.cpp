@@ -46,17 +46,20 @@ StandMetrics measure_stand(std::span<const TreeMeasurement> trees, double plot_a
   StandMetrics m;
   const double n = static_cast<double>(trees.size());
   m.stems_per_ha = n / plot_area_ha;
-  double basal_area = 0, dbh_squared = 0, height = 0, volume = 0;
+  double basal_area = 0, dbh_squared = 0, height = 0, basal_area_times_height = 0, volume = 0;
   for (const TreeMeasurement& t : trees) {
     basal_area += basal_area_m2(t.dbh_cm);
     dbh_squared += t.dbh_cm * t.dbh_cm;
     height += t.height_m;
+    basal_area_times_height += basal_area_m2(t.dbh_cm) * t.height_m;
     volume += t.volume_m3;
   }
   m.basal_area_m2_per_ha = basal_area / plot_area_ha;
   m.volume_m3_per_ha = volume / plot_area_ha;
   m.qmd_cm = trees.empty() ? kNaN : std::sqrt(dbh_squared / n);
   m.mean_height_m = trees.empty() ? kNaN : height / n;
+  // Trees below breast height have no basal area and no weight: without a stem at 1.3 m, Hg is undefined.
+  m.hg_m = basal_area > 0 ? basal_area_times_height / basal_area : kNaN;
   m.top_height_m = top_height_m(trees, plot_area_ha);
   return m;
 }

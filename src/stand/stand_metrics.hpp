@@ -22,8 +22,9 @@ struct TreeMeasurement {
 struct StandMetrics {
   double stems_per_ha = 0;
   double basal_area_m2_per_ha = 0;  // Σ π (dbh/200)² / area_ha
-  double qmd_cm = 0;                // quadratic mean diameter sqrt(mean dbh²)
+  double qmd_cm = 0;                // Dg, quadratic mean diameter sqrt(mean dbh²): the tree of mean basal area
   double mean_height_m = 0;         // arithmetic mean height
+  double hg_m = 0;                  // Hg, Lorey's height: mean height weighted by basal area, Σ g h / Σ g
   double top_height_m = 0;          // mean height of the 100 largest-DBH trees per ha
   double volume_m3_per_ha = 0;
 };

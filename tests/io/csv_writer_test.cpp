@@ -81,7 +81,7 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
   ASSERT_EQ(records.size(), 3u);
   EXPECT_EQ(records[0], (std::vector<std::string>{
                             "stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
-                            "mean_height_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
+                            "mean_height_m", "hg_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
                             "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha",
                             "dead_basal_area_m2_per_ha", "dead_volume_m3_per_ha", "dead_light_stems_per_ha",
                             "dead_light_basal_area_m2_per_ha", "dead_light_volume_m3_per_ha",

@@ -29,6 +29,17 @@ TEST(StandMetrics, PerHectareValuesOfThreeTreesOnTheHundredthOfAHectare) {
   EXPECT_NEAR(m.volume_m3_per_ha, 60.0, 1e-12);
 }
 
+TEST(StandMetrics, LoreysHeightWeighsEachTreeByItsBasalArea) {
+  // g ∝ dbh²: 20 cm → 0.01 π m², 40 cm → 0.04 π m². Hg = (0.01·15 + 0.04·25) / 0.05 = 23 m; the plain mean is 20 m.
+  const std::vector<TreeMeasurement> two = {{20, 15, 0}, {40, 25, 0}};
+  EXPECT_NEAR(measure_stand(two, 0.1).hg_m, 23.0, 1e-12);
+  EXPECT_DOUBLE_EQ(measure_stand(two, 0.1).mean_height_m, 20.0);
+  // A sapling below breast height has no basal area: it lowers the mean height, not Hg.
+  const std::vector<TreeMeasurement> with_sapling = {{20, 15, 0}, {40, 25, 0}, {0, 1.1, 0}};
+  EXPECT_NEAR(measure_stand(with_sapling, 0.1).hg_m, 23.0, 1e-12);
+  EXPECT_TRUE(std::isnan(measure_stand(std::vector<TreeMeasurement>{{0, 1.1, 0}}, 0.1).hg_m));
+}
+
 TEST(StandMetrics, TopHeightTreeCountIsHundredPerHectareRoundedAtLeastOne) {
   EXPECT_EQ(top_height_tree_count(1.0), 100);
   EXPECT_EQ(top_height_tree_count(0.05), 5);
@@ -50,6 +61,7 @@ TEST(StandMetrics, EmptyStandHasZeroDensityAndUndefinedMeans) {
   EXPECT_EQ(m.basal_area_m2_per_ha, 0.0);
   EXPECT_TRUE(std::isnan(m.qmd_cm));
   EXPECT_TRUE(std::isnan(m.mean_height_m));
+  EXPECT_TRUE(std::isnan(m.hg_m));
   EXPECT_TRUE(std::isnan(m.top_height_m));
 }
 

@@ -98,18 +98,18 @@ TEST_F(StandOutputRun, StandTableHasOneRowPerOutputYearWithFlowsSinceThePrevious
   }
   const auto rows = testing::parse_csv(read_text(root_ / "stand_table.csv"));
   ASSERT_EQ(rows.size(), 3u);
-  ASSERT_EQ(rows[1].size(), 23u);
+  ASSERT_EQ(rows[1].size(), 24u);
   EXPECT_EQ(rows[1][0], "10");
   EXPECT_EQ(rows[1][2], "300.000");   // three living trees
-  EXPECT_EQ(rows[1][8], "0.000");     // nothing removed before the first row
+  EXPECT_EQ(rows[1][9], "0.000");     // nothing removed before the first row
   EXPECT_EQ(rows[2][0], "15");
   EXPECT_EQ(rows[2][1], "5");
   EXPECT_EQ(rows[2][2], "100.000");   // one living tree left
-  EXPECT_EQ(rows[2][6], "8.000");     // its height is the top height (stand age 15 → 8 m)
-  EXPECT_EQ(rows[2][8], "100.000");   // one removed
-  EXPECT_EQ(rows[2][9], "3.142");     // π (0.10 m)² / 0.01 ha
-  EXPECT_EQ(rows[2][10], "20.000");   // 0.2 m³ / 0.01 ha
-  EXPECT_EQ(rows[2][11], "100.000");  // one died
+  EXPECT_EQ(rows[2][7], "8.000");     // its height is the top height (stand age 15 → 8 m)
+  EXPECT_EQ(rows[2][9], "100.000");   // one removed
+  EXPECT_EQ(rows[2][10], "3.142");     // π (0.10 m)² / 0.01 ha
+  EXPECT_EQ(rows[2][11], "20.000");   // 0.2 m³ / 0.01 ha
+  EXPECT_EQ(rows[2][12], "100.000");  // one died
 }
 
 TEST_F(StandOutputRun, TreesAndEventsTablesRoundTripTheirLabels) {
