@@ -19,17 +19,19 @@ std::vector<OutputColumn> dead_by_cause_columns() {
   std::vector<OutputColumn> columns;
   for (DeathCause cause : all_death_causes) {
     const std::string code(cause_code(cause));
-    columns.push_back({"dead_" + code + "_stems_per_ha", "1/ha", "stems that died of " + code + " since the previous row"});
+    columns.push_back({"dead_" + code + "_stems_per_ha", "1/ha", "stems that died of " + code + " this year"});
     columns.push_back({"dead_" + code + "_basal_area_m2_per_ha", "m²/ha", "their basal area at death"});
     columns.push_back({"dead_" + code + "_volume_m3_per_ha", "m³/ha", "their stem volume at death"});
   }
   return columns;
 }
 
+// In the order of a yield table: the living stand, what left it this year, the production.
 std::vector<OutputColumn> declare_stand_table_columns() {
   std::vector<OutputColumn> columns{
       {"stand_age", "years", "stand age"},
-      {"year_index", "–", "simulated year of the run, from 0"},
+      {"year_index", "–", "simulated year of the run, 0 = the survey year"},
+      {"species", "–", "a species, or all for the whole stand"},
       {"stems_per_ha", "1/ha", "living stems per hectare"},
       {"basal_area_m2_per_ha", "m²/ha", "basal area of the living stems"},
       {"qmd_cm", "cm", "Dg, quadratic mean diameter of the living stems"},
@@ -37,15 +39,25 @@ std::vector<OutputColumn> declare_stand_table_columns() {
       {"hg_m", "m", "Hg, Lorey's height: mean height of the living stems weighted by basal area"},
       {"top_height_m", "m", "mean height of the 100 largest-DBH living trees per hectare"},
       {"volume_m3_per_ha", "m³/ha", "stem volume of the living trees"},
-      {"removed_stems_per_ha", "1/ha", "stems removed by thinning since the previous row"},
+      {"removed_stems_per_ha", "1/ha", "stems removed by thinning this year"},
       {"removed_basal_area_m2_per_ha", "m²/ha", "their basal area at removal"},
       {"removed_volume_m3_per_ha", "m³/ha", "their stem volume at removal"},
-      {"dead_stems_per_ha", "1/ha", "stems that died since the previous row, all causes"},
+      {"dead_stems_per_ha", "1/ha", "stems that died this year, all causes"},
       {"dead_basal_area_m2_per_ha", "m²/ha", "their basal area at death"},
       {"dead_volume_m3_per_ha", "m³/ha", "their stem volume at death"},
   };
   for (OutputColumn& column : dead_by_cause_columns()) columns.push_back(std::move(column));
+  columns.push_back({"total_production_m3_per_ha", "m³/ha",
+                     "living volume + volume removed or dead since the survey (this year's included)"});
+  columns.push_back({"cai_m3_per_ha", "m³/(ha·year)", "current annual increment: total production's change this year"});
+  columns.push_back({"mai_m3_per_ha", "m³/(ha·year)", "mean annual increment: total production / stand age"});
   return columns;
+}
+
+void write_trees_leaving(CsvWriter& csv, const PerHectare& leaving) {
+  csv.number(leaving.stems, kPerHectare)
+      .number(leaving.basal_area_m2, kPerHectare)
+      .number(leaving.volume_m3, kPerHectare);
 }
 
 }  // namespace
@@ -104,24 +116,21 @@ void write_stand_table_header(CsvWriter& csv) { csv.header(column_names(stand_ta
 void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
   csv.integer(row.stand_age)
       .integer(row.year_index)
+      .text(row.species)
       .number(row.living.stems_per_ha, kPerHectare)
       .number(row.living.basal_area_m2_per_ha, kPerHectare)
       .number(row.living.qmd_cm, kCentimetres)
       .number(row.living.mean_height_m, kMetres)
       .number(row.living.hg_m, kMetres)
       .number(row.living.top_height_m, kMetres)
-      .number(row.living.volume_m3_per_ha, kPerHectare)
-      .number(row.removed_stems_per_ha, kPerHectare)
-      .number(row.removed_basal_area_m2_per_ha, kPerHectare)
-      .number(row.removed_volume_m3_per_ha, kPerHectare)
-      .number(row.dead_stems_per_ha, kPerHectare)
-      .number(row.dead_basal_area_m2_per_ha, kPerHectare)
-      .number(row.dead_volume_m3_per_ha, kPerHectare);
-  for (const auto& losses : row.dead_by_cause)
-    csv.number(losses.stems_per_ha, kPerHectare)
-        .number(losses.basal_area_m2_per_ha, kPerHectare)
-        .number(losses.volume_m3_per_ha, kPerHectare);
-  csv.end_row();
+      .number(row.living.volume_m3_per_ha, kPerHectare);
+  write_trees_leaving(csv, row.removed);
+  write_trees_leaving(csv, row.dead);
+  for (const PerHectare& dead : row.dead_by_cause) write_trees_leaving(csv, dead);
+  csv.number(row.total_production_m3_per_ha, kPerHectare)
+      .number(row.cai_m3_per_ha, kPerHectare)
+      .number(row.mai_m3_per_ha, kPerHectare)
+      .end_row();
 }
 
 void write_trees_header(CsvWriter& csv) { csv.header(column_names(trees_columns())); }

@@ -80,14 +80,15 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
   const auto records = testing::parse_csv(out.str());
   ASSERT_EQ(records.size(), 3u);
   EXPECT_EQ(records[0], (std::vector<std::string>{
-                            "stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
+                            "stand_age", "year_index", "species", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
                             "mean_height_m", "hg_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
                             "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha",
                             "dead_basal_area_m2_per_ha", "dead_volume_m3_per_ha", "dead_light_stems_per_ha",
                             "dead_light_basal_area_m2_per_ha", "dead_light_volume_m3_per_ha",
                             "dead_suppression_stems_per_ha", "dead_suppression_basal_area_m2_per_ha",
                             "dead_suppression_volume_m3_per_ha", "dead_background_stems_per_ha",
-                            "dead_background_basal_area_m2_per_ha", "dead_background_volume_m3_per_ha"}));
+                            "dead_background_basal_area_m2_per_ha", "dead_background_volume_m3_per_ha",
+                            "total_production_m3_per_ha", "cai_m3_per_ha", "mai_m3_per_ha"}));
   EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status",
                                                   "habitat_tree", "hollows", "age",
                                                   "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",

@@ -4,18 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 namespace heliostand {
 namespace {
-
-TreeSnapshot tree_with(double dbh_cm, double height_m, double volume_m3, TreeStatus status = TreeStatus::alive) {
-  TreeSnapshot t;
-  t.dbh_cm = dbh_cm;
-  t.height_m = height_m;
-  t.volume_m3 = volume_m3;
-  t.status = status;
-  return t;
-}
 
 TEST(StandMetrics, PerHectareValuesOfThreeTreesOnTheHundredthOfAHectare) {
   const std::vector<TreeMeasurement> trees = {{10, 10, 0.1}, {20, 15, 0.2}, {30, 20, 0.3}};
@@ -67,32 +60,7 @@ TEST(StandMetrics, EmptyStandHasZeroDensityAndUndefinedMeans) {
 
 TEST(StandMetrics, RejectsANonPositivePlotArea) {
   EXPECT_THROW(measure_stand({}, 0.0), std::invalid_argument);
-  EXPECT_THROW(stand_table_row(StandSnapshot{}, -5.0, {}), std::invalid_argument);
-}
-
-TEST(StandTableRow, CountsOnlyLivingTreesAndTurnsEventsIntoPerHectareFlows) {
-  StandSnapshot snapshot;
-  snapshot.stand_age = 35;
-  snapshot.year_index = 10;
-  snapshot.trees = {tree_with(20, 15, 0.25), tree_with(30, 20, 0.75), tree_with(12, 9, 0.05, TreeStatus::dead),
-                    tree_with(40, 22, 1.5, TreeStatus::removed)};
-  const std::vector<TreeEvent> events = {
-      {35, 4, "t4", "todomatsu", TreeEventKind::removed, "thinning", "thinning", 40, 22, 1.5},
-      {34, 5, "t5", "todomatsu", TreeEventKind::removed, "thinning", "thinning", 20, 15, 0.5},
-      {35, 3, "t3", "todomatsu", TreeEventKind::died, "suppression", "suppression", 12, 9, 0.05},
-  };
-  const StandTableRow row = stand_table_row(snapshot, 500.0, events);  // 500 m² = 0.05 ha
-  EXPECT_EQ(row.stand_age, 35);
-  EXPECT_EQ(row.year_index, 10);
-  EXPECT_DOUBLE_EQ(row.living.stems_per_ha, 40.0);                                  // 2 / 0.05
-  EXPECT_NEAR(row.living.basal_area_m2_per_ha, std::numbers::pi * 0.0325 / 0.05, 1e-12);  // π(0.01+0.0225)
-  EXPECT_NEAR(row.living.volume_m3_per_ha, 20.0, 1e-12);                            // 1.0 / 0.05
-  EXPECT_DOUBLE_EQ(row.living.mean_height_m, 17.5);
-  EXPECT_DOUBLE_EQ(row.living.top_height_m, 17.5);  // 5 trees wanted on 0.05 ha, only 2 alive: mean of both
-  EXPECT_DOUBLE_EQ(row.removed_stems_per_ha, 40.0);
-  EXPECT_NEAR(row.removed_basal_area_m2_per_ha, std::numbers::pi, 1e-12);  // π(0.04 + 0.01) / 0.05
-  EXPECT_NEAR(row.removed_volume_m3_per_ha, 40.0, 1e-12);                  // 2.0 / 0.05
-  EXPECT_DOUBLE_EQ(row.dead_stems_per_ha, 20.0);
+  EXPECT_THROW(measure_stand({}, -0.05), std::invalid_argument);
 }
 
 }  // namespace
