@@ -3,9 +3,13 @@
 // defaults. Every number with an equation tag is the seed's example value; the others are our choices,
 // documented in docs/model.md. Angles in degrees (as the seed gives them), lengths in metres.
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace heliostand {
+
+// The one name no species may take: stand_table.csv's rows for the whole stand carry it in their species column.
+inline constexpr std::string_view whole_stand_species = "all";
 
 struct SpeciesParameters {
   std::string name = "todomatsu";

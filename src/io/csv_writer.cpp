@@ -1,6 +1,7 @@
 #include "io/csv_writer.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -29,17 +30,20 @@ std::string csv_number(double value, int decimals) {
 
 void CsvWriter::header(std::initializer_list<std::string_view> columns) {
   for (std::string_view column : columns) text(column);
+  header_fields_ = fields_in_row_;
   end_row();
 }
 
 void CsvWriter::header(std::span<const std::string> columns) {
   for (const std::string& column : columns) text(column);
+  header_fields_ = fields_in_row_;
   end_row();
 }
 
 void CsvWriter::separator() {
   if (row_started_) out_ << ',';
   row_started_ = true;
+  ++fields_in_row_;
 }
 
 CsvWriter& CsvWriter::text(std::string_view value) {
@@ -61,8 +65,11 @@ CsvWriter& CsvWriter::number(double value, int decimals) {
 }
 
 void CsvWriter::end_row() {
+  if (header_fields_ > 0 && fields_in_row_ != header_fields_)
+    throw std::logic_error(fmt::format("csv row of {} fields under a header of {}", fields_in_row_, header_fields_));
   out_ << '\n';
   row_started_ = false;
+  fields_in_row_ = 0;
 }
 
 }  // namespace heliostand

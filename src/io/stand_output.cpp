@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "io/stand_tables.hpp"
-#include "stand/stand_metrics.hpp"
 
 namespace heliostand {
 
@@ -14,6 +13,8 @@ StandOutput::Table::Table(const std::filesystem::path& final_path)
 
 namespace {
 
+constexpr double kSquareMetresPerHectare = 10000.0;
+
 double checked_plot_area(double plot_area_m2) {
   if (!(plot_area_m2 > 0)) throw std::invalid_argument("stand output: plot area must be > 0 m²");
   return plot_area_m2;
@@ -22,7 +23,9 @@ double checked_plot_area(double plot_area_m2) {
 }  // namespace
 
 StandOutput::StandOutput(const StandOutputOptions& options)
-    : plot_area_m2_(checked_plot_area(options.plot_area_m2)), folder_(options.folder, options.force) {
+    : plot_area_m2_(checked_plot_area(options.plot_area_m2)),
+      folder_(options.folder, options.force),
+      ledger_(plot_area_m2_ / kSquareMetresPerHectare) {
   if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file));
@@ -44,14 +47,18 @@ StandOutput::~StandOutput() {
 void StandOutput::record_events(std::span<const TreeEvent> events) {
   for (const TreeEvent& event : events) write_event_row(events_->csv, event);
   events_->stream.flush();
-  events_since_last_row_.insert(events_since_last_row_.end(), events.begin(), events.end());
+  events_of_year_.insert(events_of_year_.end(), events.begin(), events.end());
+}
+
+void StandOutput::write_stand_rows(const StandInventory& inventory) {
+  for (const StandTableRow& row : ledger_.rows_of_year(inventory, events_of_year_))
+    write_stand_table_row(stand_table_->csv, row);
+  events_of_year_.clear();
+  stand_table_->stream.flush();
 }
 
 void StandOutput::write_year(const StandSnapshot& snapshot) {
-  write_stand_table_row(stand_table_->csv, stand_table_row(snapshot, plot_area_m2_, events_since_last_row_));
-  events_since_last_row_.clear();
   write_tree_rows(trees_->csv, snapshot);
-  stand_table_->stream.flush();
   trees_->stream.flush();
   if (vtk_) vtk_->write_year(snapshot);
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Everything a run writes, behind one object the stand manager drives:
 //   StandOutput out({folder, force, plot_area_m2});      // takes the folder (refuses a non-empty one)
-//   each simulated year:  out.record_events(events);      // removals and deaths, every year
-//   each output year:     out.write_year(snapshot);       // VTK year + stand.pvd, stand_table and trees rows
+//   each simulated year:  out.record_events(events);      // its removals and deaths: events.csv rows
+//                         out.write_stand_rows(inventory); // stand_table.csv: the whole stand, then each species
+//   each output year:     out.write_year(snapshot);       // VTK year + stand.pvd, trees.csv rows
 //   at the end:           out.finish(manifest);           // tables renamed into place, run.json last
 // Tables are streamed to hidden temporaries (".trees.csv.tmp") and renamed at finish(). If the run
 // throws, the destructor still renames them (their rows are complete up to the last written year), but
@@ -19,6 +20,7 @@
 #include "io/stand_snapshot.hpp"
 #include "io/tree_event.hpp"
 #include "io/vtk_time_series_writer.hpp"
+#include "stand/stand_table_ledger.hpp"
 
 namespace heliostand {
 
@@ -42,6 +44,8 @@ class StandOutput {
   StandOutput& operator=(const StandOutput&) = delete;
 
   void record_events(std::span<const TreeEvent> events);
+  // The year's stand_table.csv rows, its flows from the events recorded since the previous call.
+  void write_stand_rows(const StandInventory& inventory);
   void write_year(const StandSnapshot& snapshot);
   // Fills manifest.output_files, renames the tables into place and writes run.json last.
   void finish(RunManifest manifest);
@@ -63,7 +67,8 @@ class StandOutput {
   OutputFolder folder_;
   std::unique_ptr<VtkTimeSeriesWriter> vtk_;
   std::unique_ptr<Table> stand_table_, trees_, events_;
-  std::vector<TreeEvent> events_since_last_row_;
+  StandTableLedger ledger_;
+  std::vector<TreeEvent> events_of_year_;
   bool finished_ = false;
 };
 

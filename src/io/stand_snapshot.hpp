@@ -22,6 +22,7 @@ namespace heliostand {
 struct TreeSnapshot {
   int id = 0;
   std::string label;                // survey id
+  std::string species;              // its [species.NAME] in the scenario
   glm::dvec3 position{0.0};         // m, stem base in stand coordinates
   TreeStatus status = TreeStatus::alive;
   double age_years = 0;

@@ -120,6 +120,12 @@ void parse_species(const toml::node* node, ScenarioDraft& draft, ScenarioProblem
     for (auto&& [key, value] : *table) {
       const std::string name(key.str());
       const std::string path = "species." + name;
+      if (name == whole_stand_species) {
+        problems.add(key.source(), path,
+                     fmt::format("\"{}\" is the whole stand's name in stand_table.csv; give the species another name",
+                                 whole_stand_species));
+        continue;
+      }
       const toml::table* parameters = value.as_table();
       if (!parameters) {
         problems.add(key.source(), path,

@@ -10,6 +10,7 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   TreeSnapshot snapshot;
   snapshot.id = stand_tree.id;
   snapshot.label = stand_tree.label;
+  snapshot.species = stand_tree.species;
   snapshot.position = tree.stem_base();
   snapshot.status = stand_tree.status;
   snapshot.age_years = tree.age();
@@ -30,6 +31,14 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
     for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
   }
   return snapshot;
+}
+
+StandInventory take_inventory(const Stand& stand, int year_index) {
+  StandInventory inventory{stand.stand_age(), year_index, {}};
+  for (const StandTree& tree : stand.trees())
+    if (tree.alive())
+      inventory.living.push_back({tree.tree.dbh_cm(), tree.tree.height_m(), tree.tree.stem_volume_m3(), tree.species});
+  return inventory;
 }
 
 StandSnapshot SnapshotTracker::take(const Stand& stand, int year_index) {

@@ -1,11 +1,16 @@
 #pragma once
-// Turning the stand into what an output year writes (io/stand_snapshot.hpp).
+// Turning the stand into what an output year writes (io/stand_snapshot.hpp), and into what every year's
+// stand_table.csv rows measure (stand/stand_table_ledger.hpp).
 #include "io/stand_snapshot.hpp"
 #include "stand/stand.hpp"
+#include "stand/stand_table_ledger.hpp"
 
 namespace heliostand {
 
 TreeSnapshot snapshot_of(const StandTree& tree);
+
+// The living trees of the stand now (a year without a snapshot; an output year measures its snapshot instead).
+StandInventory take_inventory(const Stand& stand, int year_index);
 
 // Remembers which trees were already written as removed or dead: an output year holds every living tree
 // plus the trees that left the stand since the previous output year (shown once with their status).

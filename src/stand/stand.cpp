@@ -61,12 +61,22 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
   return balls.size();
 }
 
-TreeEvent Stand::end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind) {
-  tree.status = status;
+TreeEvent Stand::end_of(StandTree& tree, TreeEventKind kind, std::string_view cause, const std::string& reason) {
+  tree.status = kind == TreeEventKind::removed ? TreeStatus::removed : TreeStatus::dead;
   tree.status_changed_at_age = stand_age_;
   tree.status_reason = reason;
-  return {stand_age_, tree.id, tree.label, kind, reason, tree.tree.dbh_cm(), tree.tree.height_m(),
-          tree.tree.stem_volume_m3()};
+  return {.stand_age = stand_age_, .tree_id = tree.id, .label = tree.label, .species = tree.species, .kind = kind,
+          .cause = std::string(cause), .reason = reason, .dbh_cm = tree.tree.dbh_cm(),
+          .height_m = tree.tree.height_m(), .volume_m3 = tree.tree.stem_volume_m3()};
+}
+
+TreeEvent Stand::remove(StandTree& tree, const std::string& reason) {
+  return end_of(tree, TreeEventKind::removed, thinning_cause, reason);
+}
+
+TreeEvent Stand::kill(StandTree& tree, DeathCause cause) {
+  const std::string code(cause_code(cause));
+  return end_of(tree, TreeEventKind::died, code, code);
 }
 
 std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
@@ -75,7 +85,7 @@ std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
     if (!tree.alive()) continue;
     const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, seed);
     if (outcome.tree_died)
-      deaths.push_back(end_of(tree, TreeStatus::dead, std::string(cause_code(DeathCause::light)), TreeEventKind::died));
+      deaths.push_back(kill(tree, DeathCause::light));
   }
   if (!deaths.empty()) spdlog::info("age {}: {} trees died of light", stand_age_, deaths.size());
   return deaths;
@@ -86,7 +96,7 @@ std::vector<TreeEvent> Stand::apply_mortality(std::uint64_t seed) {
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
     if (const auto cause = draw_mortality(tree.tree, seed))
-      deaths.push_back(end_of(tree, TreeStatus::dead, std::string(cause_code(*cause)), TreeEventKind::died));
+      deaths.push_back(kill(tree, *cause));
   }
   const auto crowded = die_of_crowding();
   deaths.insert(deaths.end(), crowded.begin(), crowded.end());
@@ -109,8 +119,7 @@ std::vector<TreeEvent> Stand::die_of_crowding() {
   }
   std::vector<TreeEvent> deaths;
   for (std::size_t chosen : select_crowding_deaths(candidates, plot_area_ha_))
-    deaths.push_back(end_of(trees_[living[chosen]], TreeStatus::dead, std::string(cause_code(DeathCause::suppression)),
-                            TreeEventKind::died));
+    deaths.push_back(kill(trees_[living[chosen]], DeathCause::suppression));
   return deaths;
 }
 
@@ -135,7 +144,7 @@ std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {
   }
   std::vector<TreeEvent> removed;
   for (std::size_t chosen : select_for_thinning(event.rule, candidates, plot_area_ha_)) {
-    removed.push_back(end_of(trees_[living[chosen]], TreeStatus::removed, event.reason, TreeEventKind::removed));
+    removed.push_back(remove(trees_[living[chosen]], event.reason));
   }
   const auto kept = std::count_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.is_protected; });
   if (kept > 0)

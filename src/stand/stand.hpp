@@ -8,6 +8,7 @@
 
 #include "io/tree_event.hpp"
 #include "light/light_solver.hpp"
+#include "stand/mortality.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
 
@@ -50,7 +51,11 @@ class Stand {
  private:
   std::vector<TreeEvent> apply(const ScheduledThinning& event);
   std::vector<TreeEvent> die_of_crowding();
-  TreeEvent end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind);
+  // The tree leaves the living stand: removed by a thinning (cause thinning_cause, `reason` the scenario's) or
+  // dead (cause and reason its death cause's code).
+  TreeEvent remove(StandTree& tree, const std::string& reason);
+  TreeEvent kill(StandTree& tree, DeathCause cause);
+  TreeEvent end_of(StandTree& tree, TreeEventKind kind, std::string_view cause, const std::string& reason);
 
   double plot_area_ha_;
   int stand_age_;

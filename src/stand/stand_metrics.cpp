@@ -3,20 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
+#include <vector>
+
+#include "stand/thinning.hpp"  // basal_area_m2
 
 namespace heliostand {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kSquareMetresPerHectare = 10000.0;
-
-// Basal area of one stem, m²: the cross-section at breast height, dbh in cm.
-double basal_area_m2(double dbh_cm) {
-  const double radius_m = dbh_cm / 200.0;
-  return std::numbers::pi * radius_m * radius_m;
-}
 
 void require_positive_area(double plot_area_ha) {
   if (!(plot_area_ha > 0)) throw std::invalid_argument("stand metrics: plot area must be > 0 ha");
@@ -31,13 +26,14 @@ int top_height_tree_count(double plot_area_ha) {
 
 double top_height_m(std::span<const TreeMeasurement> trees, double plot_area_ha) {
   if (trees.empty()) return kNaN;
-  std::vector<TreeMeasurement> by_dbh(trees.begin(), trees.end());
+  std::vector<const TreeMeasurement*> by_dbh;
+  for (const TreeMeasurement& tree : trees) by_dbh.push_back(&tree);
   std::stable_sort(by_dbh.begin(), by_dbh.end(),
-                   [](const TreeMeasurement& a, const TreeMeasurement& b) { return a.dbh_cm > b.dbh_cm; });
+                   [](const TreeMeasurement* a, const TreeMeasurement* b) { return a->dbh_cm > b->dbh_cm; });
   const std::size_t count =
       std::min(by_dbh.size(), static_cast<std::size_t>(top_height_tree_count(plot_area_ha)));
   double sum = 0;
-  for (std::size_t i = 0; i < count; ++i) sum += by_dbh[i].height_m;
+  for (std::size_t i = 0; i < count; ++i) sum += by_dbh[i]->height_m;
   return sum / static_cast<double>(count);
 }
 
@@ -46,53 +42,22 @@ StandMetrics measure_stand(std::span<const TreeMeasurement> trees, double plot_a
   StandMetrics m;
   const double n = static_cast<double>(trees.size());
   m.stems_per_ha = n / plot_area_ha;
-  double basal_area = 0, dbh_squared = 0, height = 0, volume = 0;
+  double basal_area = 0, dbh_squared = 0, height = 0, basal_area_times_height = 0, volume = 0;
   for (const TreeMeasurement& t : trees) {
     basal_area += basal_area_m2(t.dbh_cm);
     dbh_squared += t.dbh_cm * t.dbh_cm;
     height += t.height_m;
+    basal_area_times_height += basal_area_m2(t.dbh_cm) * t.height_m;
     volume += t.volume_m3;
   }
   m.basal_area_m2_per_ha = basal_area / plot_area_ha;
   m.volume_m3_per_ha = volume / plot_area_ha;
   m.qmd_cm = trees.empty() ? kNaN : std::sqrt(dbh_squared / n);
   m.mean_height_m = trees.empty() ? kNaN : height / n;
+  // Trees below breast height have no basal area and no weight: without a stem at 1.3 m, Hg is undefined.
+  m.hg_m = basal_area > 0 ? basal_area_times_height / basal_area : kNaN;
   m.top_height_m = top_height_m(trees, plot_area_ha);
   return m;
-}
-
-StandTableRow stand_table_row(const StandSnapshot& snapshot, double plot_area_m2,
-                              std::span<const TreeEvent> events_since_last_row) {
-  const double area_ha = plot_area_m2 / kSquareMetresPerHectare;
-  require_positive_area(area_ha);
-  StandTableRow row;
-  row.stand_age = snapshot.stand_age;
-  row.year_index = snapshot.year_index;
-
-  std::vector<TreeMeasurement> living;
-  for (const TreeSnapshot& tree : snapshot.trees) {
-    if (tree.status == TreeStatus::alive) living.push_back({tree.dbh_cm, tree.height_m, tree.volume_m3});
-  }
-  row.living = measure_stand(living, area_ha);
-
-  for (const TreeEvent& event : events_since_last_row) {
-    if (event.kind == TreeEventKind::removed) {
-      row.removed_stems_per_ha += 1.0 / area_ha;
-      row.removed_basal_area_m2_per_ha += basal_area_m2(event.dbh_cm) / area_ha;
-      row.removed_volume_m3_per_ha += event.volume_m3 / area_ha;
-    } else {
-      row.dead_stems_per_ha += 1.0 / area_ha;
-      row.dead_basal_area_m2_per_ha += basal_area_m2(event.dbh_cm) / area_ha;
-      row.dead_volume_m3_per_ha += event.volume_m3 / area_ha;
-      for (std::size_t c = 0; c < std::size(all_death_causes); ++c)
-        if (event.reason == cause_code(all_death_causes[c])) {
-          row.dead_by_cause[c].stems_per_ha += 1.0 / area_ha;
-          row.dead_by_cause[c].basal_area_m2_per_ha += basal_area_m2(event.dbh_cm) / area_ha;
-          row.dead_by_cause[c].volume_m3_per_ha += event.volume_m3 / area_ha;
-        }
-    }
-  }
-  return row;
 }
 
 }  // namespace heliostand

@@ -41,14 +41,17 @@ StandYearResult StandYear::run(int year) {
   // 6 thinning
   record(stand_.thin());
   // 7 metrics, 8 write
-  if (output_ && is_output_year(year))
-    clock_.time("output", [&] {
-      StandSnapshot snapshot = snapshots_.take(stand_, year);
-      if (roots_) roots_->annotate(snapshot);
-      output_->write_year(snapshot);
-      return 0;
-    });
+  if (output_) clock_.time("output", [&] { write_outputs(year); return 0; });
   return result;
+}
+
+// An output year's stand table measures its snapshot's trees, so each living stem's volume is computed once a year.
+void StandYear::write_outputs(int year) {
+  if (!is_output_year(year)) return output_->write_stand_rows(take_inventory(stand_, year));
+  StandSnapshot snapshot = snapshots_.take(stand_, year);
+  if (roots_) roots_->annotate(snapshot);
+  output_->write_stand_rows(inventory_of(snapshot));
+  output_->write_year(snapshot);
 }
 
 }  // namespace heliostand

@@ -6,8 +6,8 @@
 //   4 soil       roots grow in the shared soil; the crown–root balance sets next year's branching (optional)
 //   5 mortality  suppression and background deaths
 //   6 thinning   the thinnings scheduled for this age
-//   7 metrics    the output year's snapshot (every output year)
-//   8 write      trees.csv, stand_table.csv, events.csv and the VTK year
+//   7 metrics    the living stand's inventory (every year); the snapshot of an output year, which it then measures
+//   8 write      stand_table.csv and events.csv (every year); trees.csv and the VTK year (every output year)
 // Year 0 is the established stand: steps 2, 4 (balance only), 6, 7 and 8; no growth and no response yet,
 // since the established trees grew without neighbours and competition acts from the first simulated year on.
 // Data flows one way: each step reads what the steps before it wrote this year.
@@ -46,6 +46,8 @@ class StandYear {
   bool is_output_year(int year) const;
 
  private:
+  void write_outputs(int year);
+
   Stand& stand_;
   LightSolver& stand_solver_;
   LightSolver& open_solver_;

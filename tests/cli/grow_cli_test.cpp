@@ -78,15 +78,23 @@ void check_thinning(const fs::path& folder) {
   EXPECT_EQ(events[0].at("label"), "4");
   EXPECT_EQ(events[0].at("stand_age"), "23");
   EXPECT_EQ(events[0].at("event"), "removed");
+  EXPECT_EQ(events[0].at("species"), "todomatsu");
+  EXPECT_EQ(events[0].at("cause"), "thinning") << "the code, whatever the scenario calls the thinning";
+  EXPECT_EQ(events[0].at("reason"), "test removal") << "the scenario's label beside the code";
   for (const auto& row : read_table(folder / "trees.csv"))
     EXPECT_EQ(row.at("habitat_tree"), row.at("label") == "5" ? "1" : "0") << "tree " << row.at("label");
 
   const auto table = read_table(folder / "stand_table.csv");
-  ASSERT_EQ(table.size(), 6u) << "ages 20..25, output every year";
+  ASSERT_EQ(table.size(), 12u) << "ages 20..25, each the whole stand and its one species";
   std::map<int, double> stems, removed;
-  for (const auto& row : table) {
-    stems[std::stoi(row.at("stand_age"))] = std::stod(row.at("stems_per_ha"));
-    removed[std::stoi(row.at("stand_age"))] = std::stod(row.at("removed_stems_per_ha"));
+  for (std::size_t r = 0; r < table.size(); r += 2) {
+    const auto& stand = table[r];
+    const auto& fir = table[r + 1];
+    EXPECT_EQ(stand.at("species"), "all");
+    EXPECT_EQ(fir.at("species"), "todomatsu");
+    EXPECT_EQ(fir.at("total_production_m3_per_ha"), stand.at("total_production_m3_per_ha")) << "one species is all";
+    stems[std::stoi(stand.at("stand_age"))] = std::stod(stand.at("stems_per_ha"));
+    removed[std::stoi(stand.at("stand_age"))] = std::stod(stand.at("removed_stems_per_ha"));
   }
   EXPECT_DOUBLE_EQ(stems[22], 800.0);  // 8 trees on 0.01 ha
   EXPECT_DOUBLE_EQ(stems[23], 700.0);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/csv_test_reader.hpp"
 #include "io/stand_tables.hpp"
@@ -46,6 +47,17 @@ TEST(CsvWriter, RowsJoinFieldsWithCommasAndEndWithNewline) {
   EXPECT_EQ(out.str(), "id,label,dbh_cm\n7,\"X,1\",12.3\n-3,,\n");
 }
 
+TEST(CsvWriter, ARowWithMoreOrFewerFieldsThanItsHeaderIsRefused) {
+  std::ostringstream out;
+  CsvWriter csv(out);
+  csv.header({"id", "dbh_cm"});
+  csv.integer(1).number(12.0, 1).end_row();
+  EXPECT_THROW(csv.integer(2).end_row(), std::logic_error);
+  CsvWriter again(out);
+  again.header({"id", "dbh_cm"});
+  EXPECT_THROW(again.integer(3).number(1.0, 1).number(2.0, 1).end_row(), std::logic_error);
+}
+
 TEST(CsvWriter, AwkwardTextSurvivesARoundTrip) {
   const std::vector<std::string> fields = {"plain", "com,ma", "quo\"te", "new\nline", " lead", "", "\"\""};
   std::ostringstream out;
@@ -68,32 +80,35 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
   const auto records = testing::parse_csv(out.str());
   ASSERT_EQ(records.size(), 3u);
   EXPECT_EQ(records[0], (std::vector<std::string>{
-                            "stand_age", "year_index", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
-                            "mean_height_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
+                            "stand_age", "year_index", "species", "stems_per_ha", "basal_area_m2_per_ha", "qmd_cm",
+                            "mean_height_m", "hg_m", "top_height_m", "volume_m3_per_ha", "removed_stems_per_ha",
                             "removed_basal_area_m2_per_ha", "removed_volume_m3_per_ha", "dead_stems_per_ha",
                             "dead_basal_area_m2_per_ha", "dead_volume_m3_per_ha", "dead_light_stems_per_ha",
                             "dead_light_basal_area_m2_per_ha", "dead_light_volume_m3_per_ha",
                             "dead_suppression_stems_per_ha", "dead_suppression_basal_area_m2_per_ha",
                             "dead_suppression_volume_m3_per_ha", "dead_background_stems_per_ha",
-                            "dead_background_basal_area_m2_per_ha", "dead_background_volume_m3_per_ha"}));
+                            "dead_background_basal_area_m2_per_ha", "dead_background_volume_m3_per_ha",
+                            "total_production_m3_per_ha", "cai_m3_per_ha", "mai_m3_per_ha"}));
   EXPECT_EQ(records[1], (std::vector<std::string>{"stand_age", "tree_id", "label", "x_m", "y_m", "status",
                                                   "habitat_tree", "hollows", "age",
                                                   "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",
                                                   "volume_m3", "leaf_balls", "mean_light", "light_budget",
                                                   "relative_light", "dbh_increment_cm", "root_length_m",
                                                   "root_max_depth_m", "root_uptake"}));
-  EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "event", "reason", "dbh_cm",
-                                                  "height_m", "volume_m3"}));
+  EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "species", "event", "cause",
+                                                  "reason", "dbh_cm", "height_m", "volume_m3"}));
 }
 
-TEST(StandTables, EventRowCarriesKindReasonAndQuotedLabel) {
+TEST(StandTables, EventRowCarriesSpeciesKindCauseCodeReasonLabelAndQuotedTexts) {
   std::ostringstream out;
   CsvWriter csv(out);
-  write_event_row(csv, {45, 12, "P3,12", TreeEventKind::removed, "thinning:low", 23.456, 18.2, 0.41234});
-  write_event_row(csv, {46, 13, "P3-13", TreeEventKind::died, "suppression", 8.0, 9.0, 0.02});
+  write_event_row(csv, {45, 12, "P3,12", "todomatsu", TreeEventKind::removed, "thinning", "first thinning, from below",
+                        23.456, 18.2, 0.41234});
+  write_event_row(csv, {46, 13, "P3-13", "karamatsu", TreeEventKind::died, "suppression", "suppression", 8.0, 9.0,
+                        0.02});
   EXPECT_EQ(out.str(),
-            "45,12,\"P3,12\",removed,thinning:low,23.46,18.200,0.4123\n"
-            "46,13,P3-13,died,suppression,8.00,9.000,0.0200\n");
+            "45,12,\"P3,12\",todomatsu,removed,thinning,\"first thinning, from below\",23.46,18.200,0.4123\n"
+            "46,13,P3-13,karamatsu,died,suppression,suppression,8.00,9.000,0.0200\n");
 }
 
 }  // namespace

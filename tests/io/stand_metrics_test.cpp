@@ -4,18 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 namespace heliostand {
 namespace {
-
-TreeSnapshot tree_with(double dbh_cm, double height_m, double volume_m3, TreeStatus status = TreeStatus::alive) {
-  TreeSnapshot t;
-  t.dbh_cm = dbh_cm;
-  t.height_m = height_m;
-  t.volume_m3 = volume_m3;
-  t.status = status;
-  return t;
-}
 
 TEST(StandMetrics, PerHectareValuesOfThreeTreesOnTheHundredthOfAHectare) {
   const std::vector<TreeMeasurement> trees = {{10, 10, 0.1}, {20, 15, 0.2}, {30, 20, 0.3}};
@@ -27,6 +20,17 @@ TEST(StandMetrics, PerHectareValuesOfThreeTreesOnTheHundredthOfAHectare) {
   EXPECT_DOUBLE_EQ(m.mean_height_m, 15.0);
   EXPECT_DOUBLE_EQ(m.top_height_m, 20.0);  // 100/ha on 0.01 ha = one tree: the thickest
   EXPECT_NEAR(m.volume_m3_per_ha, 60.0, 1e-12);
+}
+
+TEST(StandMetrics, LoreysHeightWeighsEachTreeByItsBasalArea) {
+  // g ∝ dbh²: 20 cm → 0.01 π m², 40 cm → 0.04 π m². Hg = (0.01·15 + 0.04·25) / 0.05 = 23 m; the plain mean is 20 m.
+  const std::vector<TreeMeasurement> two = {{20, 15, 0}, {40, 25, 0}};
+  EXPECT_NEAR(measure_stand(two, 0.1).hg_m, 23.0, 1e-12);
+  EXPECT_DOUBLE_EQ(measure_stand(two, 0.1).mean_height_m, 20.0);
+  // A sapling below breast height has no basal area: it lowers the mean height, not Hg.
+  const std::vector<TreeMeasurement> with_sapling = {{20, 15, 0}, {40, 25, 0}, {0, 1.1, 0}};
+  EXPECT_NEAR(measure_stand(with_sapling, 0.1).hg_m, 23.0, 1e-12);
+  EXPECT_TRUE(std::isnan(measure_stand(std::vector<TreeMeasurement>{{0, 1.1, 0}}, 0.1).hg_m));
 }
 
 TEST(StandMetrics, TopHeightTreeCountIsHundredPerHectareRoundedAtLeastOne) {
@@ -50,37 +54,13 @@ TEST(StandMetrics, EmptyStandHasZeroDensityAndUndefinedMeans) {
   EXPECT_EQ(m.basal_area_m2_per_ha, 0.0);
   EXPECT_TRUE(std::isnan(m.qmd_cm));
   EXPECT_TRUE(std::isnan(m.mean_height_m));
+  EXPECT_TRUE(std::isnan(m.hg_m));
   EXPECT_TRUE(std::isnan(m.top_height_m));
 }
 
 TEST(StandMetrics, RejectsANonPositivePlotArea) {
   EXPECT_THROW(measure_stand({}, 0.0), std::invalid_argument);
-  EXPECT_THROW(stand_table_row(StandSnapshot{}, -5.0, {}), std::invalid_argument);
-}
-
-TEST(StandTableRow, CountsOnlyLivingTreesAndTurnsEventsIntoPerHectareFlows) {
-  StandSnapshot snapshot;
-  snapshot.stand_age = 35;
-  snapshot.year_index = 10;
-  snapshot.trees = {tree_with(20, 15, 0.25), tree_with(30, 20, 0.75), tree_with(12, 9, 0.05, TreeStatus::dead),
-                    tree_with(40, 22, 1.5, TreeStatus::removed)};
-  const std::vector<TreeEvent> events = {
-      {35, 4, "t4", TreeEventKind::removed, "thinning", 40, 22, 1.5},
-      {34, 5, "t5", TreeEventKind::removed, "thinning", 20, 15, 0.5},
-      {35, 3, "t3", TreeEventKind::died, "suppression", 12, 9, 0.05},
-  };
-  const StandTableRow row = stand_table_row(snapshot, 500.0, events);  // 500 m² = 0.05 ha
-  EXPECT_EQ(row.stand_age, 35);
-  EXPECT_EQ(row.year_index, 10);
-  EXPECT_DOUBLE_EQ(row.living.stems_per_ha, 40.0);                                  // 2 / 0.05
-  EXPECT_NEAR(row.living.basal_area_m2_per_ha, std::numbers::pi * 0.0325 / 0.05, 1e-12);  // π(0.01+0.0225)
-  EXPECT_NEAR(row.living.volume_m3_per_ha, 20.0, 1e-12);                            // 1.0 / 0.05
-  EXPECT_DOUBLE_EQ(row.living.mean_height_m, 17.5);
-  EXPECT_DOUBLE_EQ(row.living.top_height_m, 17.5);  // 5 trees wanted on 0.05 ha, only 2 alive: mean of both
-  EXPECT_DOUBLE_EQ(row.removed_stems_per_ha, 40.0);
-  EXPECT_NEAR(row.removed_basal_area_m2_per_ha, std::numbers::pi, 1e-12);  // π(0.04 + 0.01) / 0.05
-  EXPECT_NEAR(row.removed_volume_m3_per_ha, 40.0, 1e-12);                  // 2.0 / 0.05
-  EXPECT_DOUBLE_EQ(row.dead_stems_per_ha, 20.0);
+  EXPECT_THROW(measure_stand({}, -0.05), std::invalid_argument);
 }
 
 }  // namespace

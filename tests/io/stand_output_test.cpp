@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -42,23 +43,44 @@ RunManifest example_manifest() {
   return m;
 }
 
-// A run of two output years on the 100 m² synthetic plot: a thinning and a death in between.
+// The synthetic stand in year `year` of a run that starts at stand age 10: the Karamatsu "A,2" is thinned in
+// year 2 (gone from then on), the Todomatsu "B \"3\"" dies in year 4 (still standing, dead).
+testing::SyntheticStand stand_in_year(int year) {
+  auto stand = testing::make_synthetic_stand(10 + year, year);
+  if (year >= 4) stand.snapshot.trees[2].status = TreeStatus::dead;
+  if (year >= 2) stand.snapshot.trees.erase(stand.snapshot.trees.begin() + 1);
+  return stand;
+}
+
+// stand_table.csv as column → value, per (stand age, species).
+std::map<std::pair<int, std::string>, std::map<std::string, std::string>> stand_rows(const fs::path& file) {
+  const auto records = testing::parse_csv(read_text(file));
+  std::map<std::pair<int, std::string>, std::map<std::string, std::string>> rows;
+  for (std::size_t r = 1; r < records.size(); ++r) {
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < records[0].size() && c < records[r].size(); ++c) row[records[0][c]] = records[r][c];
+    rows[{std::stoi(row.at("stand_age")), row.at("species")}] = row;
+  }
+  return rows;
+}
+
+// Five simulated years on the 100 m² synthetic plot (one tree = 100 stems/ha), written in years 0 and 5.
 class StandOutputRun : public ::testing::Test {
  protected:
   StandOutputRun() : tmp_("stand_output"), root_(tmp_.path() / "run") {}
 
-  void run_two_years(StandOutput& out) {
-    const auto first = testing::make_synthetic_stand(10, 0);
-    out.write_year(first.snapshot);
-    const std::vector<TreeEvent> events = {
-        {12, 2, "A,2", TreeEventKind::removed, "thinning:low", 20.0, 14.0, 0.2},
-        {14, 3, "B \"3\"", TreeEventKind::died, "suppression", 8.0, 6.0, 0.05},
-    };
-    out.record_events(events);
-    auto second = testing::make_synthetic_stand(15, 5);
-    second.snapshot.trees.erase(second.snapshot.trees.begin() + 1);         // the thinned tree is gone
-    second.snapshot.trees.back().status = TreeStatus::dead;                // the dead one still stands
-    out.write_year(second.snapshot);
+  void run_two_output_years(StandOutput& out) {
+    const TreeEvent thinned{12, 2, "A,2", "karamatsu", TreeEventKind::removed, "thinning", "thinning:low",
+                            20.0, 14.0, 0.2};
+    const TreeEvent died{14, 3, "B \"3\"", "todomatsu", TreeEventKind::died, "suppression", "suppression",
+                         8.0, 6.0, 0.05};
+    for (int year = 0; year <= 5; ++year) {
+      if (year == 2) out.record_events(std::vector{thinned});
+      if (year == 4) out.record_events(std::vector{died});
+      const auto stand = stand_in_year(year);
+      out.write_stand_rows(inventory_of(stand.snapshot));
+      if (year == 0 || year == 5) out.write_year(stand.snapshot);
+    }
   }
 
   testing::TempFolder tmp_;
@@ -68,7 +90,7 @@ class StandOutputRun : public ::testing::Test {
 TEST_F(StandOutputRun, WritesTheTablesTheVtkSeriesAndRunJsonLast) {
   {
     StandOutput out({root_, false, 100.0});
-    run_two_years(out);
+    run_two_output_years(out);
     EXPECT_FALSE(fs::exists(root_ / "run.json")) << "run.json must only appear when the run is finished";
     EXPECT_TRUE(fs::exists(root_ / "stand.pvd")) << "the series must be viewable while the run goes on";
     out.finish(example_manifest());
@@ -90,32 +112,50 @@ TEST_F(StandOutputRun, WritesTheTablesTheVtkSeriesAndRunJsonLast) {
   for (const std::string& file : files) EXPECT_LE(fs::last_write_time(root_ / file), manifest_time) << file;
 }
 
-TEST_F(StandOutputRun, StandTableHasOneRowPerOutputYearWithFlowsSinceThePreviousRow) {
+TEST_F(StandOutputRun, StandTableHasTheWholeStandThenEachSpeciesEveryYearWithThatYearsFlows) {
   {
     StandOutput out({root_, false, 100.0});  // 0.01 ha: one tree is 100 stems/ha
-    run_two_years(out);
+    run_two_output_years(out);
     out.finish(example_manifest());
   }
-  const auto rows = testing::parse_csv(read_text(root_ / "stand_table.csv"));
-  ASSERT_EQ(rows.size(), 3u);
-  ASSERT_EQ(rows[1].size(), 23u);
-  EXPECT_EQ(rows[1][0], "10");
-  EXPECT_EQ(rows[1][2], "300.000");   // three living trees
-  EXPECT_EQ(rows[1][8], "0.000");     // nothing removed before the first row
-  EXPECT_EQ(rows[2][0], "15");
-  EXPECT_EQ(rows[2][1], "5");
-  EXPECT_EQ(rows[2][2], "100.000");   // one living tree left
-  EXPECT_EQ(rows[2][6], "8.000");     // its height is the top height (stand age 15 → 8 m)
-  EXPECT_EQ(rows[2][8], "100.000");   // one removed
-  EXPECT_EQ(rows[2][9], "3.142");     // π (0.10 m)² / 0.01 ha
-  EXPECT_EQ(rows[2][10], "20.000");   // 0.2 m³ / 0.01 ha
-  EXPECT_EQ(rows[2][11], "100.000");  // one died
+  const auto records = testing::parse_csv(read_text(root_ / "stand_table.csv"));
+  ASSERT_EQ(records.size(), 1u + 6 * 3) << "six years, each the whole stand and two species";
+  for (const auto& record : records) EXPECT_EQ(record.size(), records[0].size());
+  EXPECT_EQ((std::vector<std::string>{records[1][2], records[2][2], records[3][2]}),
+            (std::vector<std::string>{"all", "karamatsu", "todomatsu"}));
+
+  const auto rows = stand_rows(root_ / "stand_table.csv");
+  EXPECT_EQ(rows.at({10, "all"}).at("year_index"), "0");
+  EXPECT_EQ(rows.at({10, "all"}).at("stems_per_ha"), "300.000");
+  EXPECT_EQ(rows.at({10, "karamatsu"}).at("stems_per_ha"), "100.000");
+  EXPECT_EQ(rows.at({10, "all"}).at("cai_m3_per_ha"), "") << "no year before the survey";
+  // Year 2: the Karamatsu is thinned, in its own row and the stand's, not in the Todomatsu's.
+  EXPECT_EQ(rows.at({12, "all"}).at("removed_stems_per_ha"), "100.000");
+  EXPECT_EQ(rows.at({12, "all"}).at("removed_basal_area_m2_per_ha"), "3.142");  // π (0.10 m)² / 0.01 ha
+  EXPECT_EQ(rows.at({12, "all"}).at("removed_volume_m3_per_ha"), "20.000");     // 0.2 m³ / 0.01 ha
+  EXPECT_EQ(rows.at({12, "karamatsu"}).at("removed_stems_per_ha"), "100.000");
+  EXPECT_EQ(rows.at({12, "todomatsu"}).at("removed_stems_per_ha"), "0.000");
+  EXPECT_EQ(rows.at({13, "all"}).at("removed_stems_per_ha"), "0.000") << "a flow is its year's only";
+  EXPECT_EQ(rows.at({14, "all"}).at("dead_suppression_stems_per_ha"), "100.000");
+  EXPECT_EQ(rows.at({14, "todomatsu"}).at("dead_stems_per_ha"), "100.000");
+  // Year 5, age 15: one tree alive (8 m tall, 0.064 m³); production keeps the 0.2 m³ cut and the 0.05 m³ dead.
+  const auto& last = rows.at({15, "all"});
+  EXPECT_EQ(last.at("year_index"), "5");
+  EXPECT_EQ(last.at("stems_per_ha"), "100.000");
+  EXPECT_EQ(last.at("top_height_m"), "8.000");
+  EXPECT_EQ(last.at("hg_m"), "8.000");
+  EXPECT_EQ(last.at("total_production_m3_per_ha"), "31.400");  // 6.4 + 20 + 5
+  EXPECT_EQ(last.at("mai_m3_per_ha"), "2.093");               // 31.4 / 15
+  const auto& gone = rows.at({15, "karamatsu"});
+  EXPECT_EQ(gone.at("stems_per_ha"), "0.000");
+  EXPECT_EQ(gone.at("qmd_cm"), "") << "no living Karamatsu: no mean diameter";
+  EXPECT_EQ(gone.at("total_production_m3_per_ha"), "20.000");
 }
 
 TEST_F(StandOutputRun, TreesAndEventsTablesRoundTripTheirLabels) {
   {
     StandOutput out({root_, false, 100.0});
-    run_two_years(out);
+    run_two_output_years(out);
     out.finish(example_manifest());
   }
   const auto trees = testing::parse_csv(read_text(root_ / "trees.csv"));
@@ -130,28 +170,29 @@ TEST_F(StandOutputRun, TreesAndEventsTablesRoundTripTheirLabels) {
   EXPECT_EQ(trees[1][age], "12") << "a whole number of years (the synthetic tree of height 6 is 12 years old)";
   const auto events = testing::parse_csv(read_text(root_ / "events.csv"));
   ASSERT_EQ(events.size(), 3u);
-  EXPECT_EQ(events[1], (std::vector<std::string>{"12", "2", "A,2", "removed", "thinning:low", "20.00", "14.000",
-                                                 "0.2000"}));
-  EXPECT_EQ(events[2][3], "died");
+  EXPECT_EQ(events[1], (std::vector<std::string>{"12", "2", "A,2", "karamatsu", "removed", "thinning",
+                                                 "thinning:low", "20.00", "14.000", "0.2000"}));
+  EXPECT_EQ(events[2][4], "died");
+  EXPECT_EQ(events[2][5], "suppression");
 }
 
 TEST_F(StandOutputRun, AnAbortedRunKeepsItsTablesButHasNoRunJson) {
   try {
     StandOutput out({root_, false, 100.0});
-    run_two_years(out);
+    run_two_output_years(out);
     throw std::runtime_error("simulated crash");
   } catch (const std::runtime_error&) {
   }
   EXPECT_FALSE(fs::exists(root_ / "run.json"));
   EXPECT_TRUE(fs::exists(root_ / "stand_table.csv"));
-  EXPECT_EQ(testing::parse_csv(read_text(root_ / "stand_table.csv")).size(), 3u);
+  EXPECT_EQ(testing::parse_csv(read_text(root_ / "stand_table.csv")).size(), 1u + 6 * 3);
   EXPECT_FALSE(has_temporaries(root_));
 }
 
 TEST_F(StandOutputRun, TablesOnlyWhenVtkIsOff) {
   {
     StandOutput out({root_, false, 100.0, false});
-    run_two_years(out);
+    run_two_output_years(out);
     out.finish(example_manifest());
   }
   EXPECT_FALSE(fs::exists(root_ / "stand.pvd"));

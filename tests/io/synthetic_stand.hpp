@@ -66,11 +66,12 @@ inline SyntheticTree make_synthetic_tree(glm::dvec3 base, int height) {
 inline int synthetic_shoot_count(int height) { return height + kBranchesPerWhorl * (height - kFirstWhorlHeight); }
 inline int synthetic_ball_count(int height) { return kBranchesPerWhorl * (height - kFirstWhorlHeight - 1); }
 
-inline TreeSnapshot snapshot_of(const SyntheticTree& tree, int id, std::string label, glm::dvec3 position,
-                                int height, TreeStatus status = TreeStatus::alive) {
+inline TreeSnapshot snapshot_of(const SyntheticTree& tree, int id, std::string label, std::string species,
+                                glm::dvec3 position, int height, TreeStatus status = TreeStatus::alive) {
   TreeSnapshot s;
   s.id = id;
   s.label = std::move(label);
+  s.species = std::move(species);
   s.position = position;
   s.status = status;
   s.age_years = 2.0 * height;
@@ -86,7 +87,8 @@ inline TreeSnapshot snapshot_of(const SyntheticTree& tree, int id, std::string l
   return s;
 }
 
-// Three trees on a 10 m × 10 m plot; heights grow by one metre per output year.
+// Three trees on a 10 m × 10 m plot, two Todomatsu and a Karamatsu (the second); heights grow by one metre every
+// two years of stand age.
 struct SyntheticStand {
   std::vector<SyntheticTree> trees;
   std::vector<int> heights;
@@ -97,12 +99,14 @@ inline SyntheticStand make_synthetic_stand(int stand_age, int year_index) {
   SyntheticStand stand;
   const glm::dvec3 positions[] = {{2.0, 2.0, 0.0}, {7.0, 3.0, 0.0}, {7.5, 8.0, 0.0}};
   const char* labels[] = {"A-1", "A,2", "B \"3\""};  // labels that need CSV quoting
+  const char* species[] = {"todomatsu", "karamatsu", "todomatsu"};
   stand.heights = {stand_age / 2 + 1, stand_age / 2, stand_age / 2 - 1};
   for (int i = 0; i < 3; ++i) stand.trees.push_back(make_synthetic_tree(positions[i], stand.heights[i]));
   stand.snapshot.stand_age = stand_age;
   stand.snapshot.year_index = year_index;
   for (int i = 0; i < 3; ++i) {
-    stand.snapshot.trees.push_back(snapshot_of(stand.trees[i], i + 1, labels[i], positions[i], stand.heights[i]));
+    stand.snapshot.trees.push_back(
+        snapshot_of(stand.trees[i], i + 1, labels[i], species[i], positions[i], stand.heights[i]));
   }
   return stand;
 }

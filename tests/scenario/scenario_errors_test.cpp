@@ -69,6 +69,12 @@ TEST(ScenarioErrors, WrongTypes) {
                           "scenario.toml:14: key 'light.exact': expected true or false, got a string"));
 }
 
+TEST(ScenarioErrors, NoSpeciesMayTakeTheWholeStandsName) {
+  EXPECT_THAT(scenario_problems("species_all", minimal_stand + "[species.all]\nheight_k = 0.03\n"),
+              ElementsAre("scenario.toml:11: key 'species.all': \"all\" is the whole stand's name in stand_table.csv; "
+                          "give the species another name"));
+}
+
 TEST(ScenarioErrors, OutOfRangeValues) {
   std::string toml = minimal_stand;
   toml.replace(toml.find("years = 10"), 10, "years = -5");

@@ -14,7 +14,6 @@
 #include "stand/establishment.hpp"
 #include "stand/mortality.hpp"
 #include "stand/stand.hpp"
-#include "stand/stand_metrics.hpp"
 #include "stand/stand_year.hpp"
 
 namespace heliostand {
@@ -197,22 +196,6 @@ TEST(Mortality, BackgroundRateKillsAboutItsShare) {
     }
   }
   EXPECT_NEAR(died / 400.0, 0.1, 0.04);
-}
-
-TEST(StandTable, DeathsAreCountedByCause) {
-  StandSnapshot snapshot;
-  snapshot.stand_age = 50;
-  const std::vector<TreeEvent> events{{50, 1, "a", TreeEventKind::died, "suppression", 20.0, 15.0, 0.3},
-                                      {50, 2, "b", TreeEventKind::died, "light", 10.0, 8.0, 0.05},
-                                      {50, 3, "c", TreeEventKind::removed, "first thinning", 30.0, 18.0, 0.6}};
-  const StandTableRow row = stand_table_row(snapshot, 10000.0, events);
-  EXPECT_DOUBLE_EQ(row.dead_stems_per_ha, 2.0);
-  EXPECT_NEAR(row.dead_basal_area_m2_per_ha, M_PI * (0.1 * 0.1 + 0.05 * 0.05), 1e-12);
-  EXPECT_DOUBLE_EQ(row.dead_by_cause[1].stems_per_ha, 1.0);  // suppression
-  EXPECT_NEAR(row.dead_by_cause[1].volume_m3_per_ha, 0.3, 1e-12);
-  EXPECT_DOUBLE_EQ(row.dead_by_cause[0].stems_per_ha, 1.0);  // light
-  EXPECT_DOUBLE_EQ(row.dead_by_cause[2].stems_per_ha, 0.0);  // background
-  EXPECT_DOUBLE_EQ(row.removed_stems_per_ha, 1.0);
 }
 
 // The standard overcast sky with a forest-floor albedo of 0.15: about 15 % of the light comes from below the

@@ -25,8 +25,15 @@ def table_rows(path):
 
 
 def stand_rows(out):
+    """The whole stand's rows of stand_table.csv (species "all"), one per simulated year, by stand age."""
     with open(f"{out}/stand_table.csv", newline="") as f:
-        return {int(r["stand_age"]): r for r in csv.DictReader(f)}
+        return {int(r["stand_age"]): r for r in csv.DictReader(f) if r["species"] == "all"}
+
+
+def output_ages(out):
+    """The stand ages written to trees.csv (every output_interval years, 5 here): the ages the slope is fitted on."""
+    with open(f"{out}/trees.csv", newline="") as f:
+        return sorted({int(r["stand_age"]) for r in csv.DictReader(f)})
 
 
 def trees(out):
@@ -69,22 +76,25 @@ def main(table_path, thinned, unthinned, heavy, heavy_age, report_path):
     check(ages[-1] - ages[0] >= 40, f"the run covers {ages[-1] - ages[0]} years of the table (at least 40)")
     check(worst <= 0.20, f"basal area and Dg within 20 % of the table at every age after the start (worst {100 * worst:.1f} %)")
 
-    # 2. Self-thinning, unthinned stand.
+    # 2. Self-thinning, unthinned stand. The table has a row every year; the report lists the output years, each with
+    # the deaths of the period since the one before, and the slope is fitted on them.
     run = stand_rows(unthinned)
     ages = sorted(run)
+    written = output_ages(unthinned)
+    dead_in = lambda first, last: sum(float(run[a]["dead_suppression_stems_per_ha"]) for a in ages if first < a <= last)
     lines.append("\n## Unthinned\n")
     lines.append("| age | N | G | Dq | dead by suppression (in the period) |")
     lines.append("|---|---|---|---|---|")
-    for a in ages:
+    for previous, a in zip([ages[0] - 1] + written, written):
         r = run[a]
         lines.append(f"| {a} | {float(r['stems_per_ha']):.0f} | {float(r['basal_area_m2_per_ha']):.1f} | {float(r['qmd_cm']):.2f} | "
-                     f"{float(r['dead_suppression_stems_per_ha']):.0f} |")
+                     f"{dead_in(previous, a):.0f} |")
     lines.append("")
-    dead = sum(float(run[a]["dead_suppression_stems_per_ha"]) for a in ages)
+    dead = dead_in(ages[0] - 1, ages[-1])
     check(dead > 0, f"stems die of suppression ({dead:.0f} stems/ha in all)")
     top = max(float(run[a]["basal_area_m2_per_ha"]) for a in ages)
-    check(top <= 80.0, f"basal area never above 80 m²/ha (highest {top:.1f})")
-    fit = [a for a in ages if a >= ages[0] + 10]
+    check(top <= 80.0, f"basal area never above 80 m²/ha in any year (highest {top:.1f})")
+    fit = [a for a in written if a >= ages[0] + 10]
     s = slope([math.log(float(run[a]["qmd_cm"])) for a in fit], [math.log(float(run[a]["stems_per_ha"])) for a in fit])
     check(-2.0 <= s <= -1.3, f"log N vs log Dq slope {s:.2f} over ages {fit[0]}-{fit[-1]} in [-2.0, -1.3] (Reineke: -1.605)")
 
