@@ -54,10 +54,11 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
 void write_trees_header(CsvWriter& csv) {
   csv.header({"stand_age", "tree_id", "label", "x_m", "y_m", "status", "habitat_tree", "hollows", "age", "height_m", "dbh_cm", "crown_base_m",
               "crown_radius_m", "volume_m3", "leaf_balls", "mean_light", "light_budget", "relative_light",
-              "dbh_increment_cm", "root_length_m", "root_max_depth_m", "root_uptake"});
+              "dbh_increment_cm", "root_length_m", "root_max_depth_m", "root_uptake", "hegyi_index"});
 }
 
 void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
+  constexpr int kCompetitionIndex = 4;  // 1/m: a 20 cm neighbour 2 m from a 20 cm tree adds 0.5
   for (const TreeSnapshot& tree : snapshot.trees) {
     csv.integer(snapshot.stand_age)
         .integer(tree.id)
@@ -81,6 +82,7 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .number(tree.root_length_m, kMetres)
         .number(tree.root_max_depth_m, kMetres)
         .number(tree.root_uptake, kLight)
+        .number(tree.hegyi_index, kCompetitionIndex)
         .end_row();
   }
 }

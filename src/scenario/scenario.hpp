@@ -10,6 +10,7 @@
 #include "architecture/species.hpp"
 #include "light/light_parameters.hpp"
 #include "compute/device_choice.hpp"
+#include "scenario/competition_settings.hpp"
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
 #include "survey/plot_bounds.hpp"
@@ -37,6 +38,7 @@ struct Scenario {
   RunSettings run;
   std::map<std::string, SpeciesParameters> species;  // by name; SpeciesParameters::name = the key
   LightParameters light;
+  CompetitionSettings competition;      // [competition]
   std::vector<ThinningEvent> thinning;  // sorted by age (file order among equal ages)
   RootsSettings roots;                  // [roots], [soil], [coupling], [[root_pruning]]
   Survey survey;                        // read, checked and imputed; its warnings are for the caller to log

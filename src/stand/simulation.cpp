@@ -35,6 +35,14 @@ LightParameters light_for(const Scenario& scenario) {
   return light;
 }
 
+// Competitors are counted across periodic edges when light is (the plot a tile of a larger plantation), over the
+// domain the light solver wraps.
+CompetitionNeighbourhood competition_for(const Scenario& scenario) {
+  const LightParameters light = light_for(scenario);
+  return {scenario.competition.hegyi_radius_m,
+          StandEdges{light.periodic, PlotBounds{light.plot_x_min, light.plot_y_min, light.plot_x_max, light.plot_y_max}}};
+}
+
 }  // namespace
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
@@ -65,7 +73,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
                report.unusable);
   Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
-              schedule(scenario));
+              schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
   auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand); });
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);

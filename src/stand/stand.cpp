@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -12,11 +13,12 @@
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-             std::vector<ScheduledThinning> thinning)
+             std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition)
     : plot_area_ha_(plot_area_ha),
       stand_age_(stand_age),
       trees_(std::move(trees)),
-      thinning_(std::move(thinning)) {}
+      thinning_(std::move(thinning)),
+      competition_(competition) {}
 
 void Stand::grow_year() {
   ++stand_age_;
@@ -122,6 +124,23 @@ std::vector<TreeEvent> Stand::thin() {
     removed.insert(removed.end(), events.begin(), events.end());
   }
   return removed;
+}
+
+std::vector<double> Stand::hegyi_indices() const {
+  std::vector<std::size_t> living;
+  std::vector<glm::dvec2> positions;
+  std::vector<double> dbh;
+  for (std::size_t i = 0; i < trees_.size(); ++i) {
+    if (!trees_[i].alive()) continue;
+    living.push_back(i);
+    positions.emplace_back(trees_[i].tree.stem_base());
+    dbh.push_back(trees_[i].tree.dbh_cm());
+  }
+  const Neighbourhood stems(positions, competition_.edges);
+  const std::vector<double> of_living = heliostand::hegyi_indices(stems, dbh, competition_.radius_m);
+  std::vector<double> indices(trees_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < living.size(); ++k) indices[living[k]] = of_living[k];
+  return indices;
 }
 
 std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {

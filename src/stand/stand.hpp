@@ -8,6 +8,7 @@
 
 #include "io/tree_event.hpp"
 #include "light/light_solver.hpp"
+#include "stand/hegyi_index.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
 
@@ -20,10 +21,16 @@ struct ScheduledThinning {
   bool protect_habitat_trees = true;  // trees with hollows are kept
 };
 
+// The competitors a tree counts (stand/hegyi_index.hpp): within a radius, across the plot's edges as they are.
+struct CompetitionNeighbourhood {
+  double radius_m = default_competition_radius_m;
+  StandEdges edges;
+};
+
 class Stand {
  public:
   Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-        std::vector<ScheduledThinning> thinning);
+        std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition = {});
 
   int stand_age() const { return stand_age_; }
   double plot_area_ha() const { return plot_area_ha_; }
@@ -47,6 +54,10 @@ class Stand {
   // Step 6. Thinnings scheduled for the current stand age. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
+  // Hegyi's competition index of every tree (trees() order) among the living; NaN for trees not alive.
+  std::vector<double> hegyi_indices() const;
+  const CompetitionNeighbourhood& competition() const { return competition_; }
+
  private:
   std::vector<TreeEvent> apply(const ScheduledThinning& event);
   std::vector<TreeEvent> die_of_crowding();
@@ -56,6 +67,7 @@ class Stand {
   int stand_age_;
   std::vector<StandTree> trees_;
   std::vector<ScheduledThinning> thinning_;
+  CompetitionNeighbourhood competition_;
 };
 
 }  // namespace heliostand
