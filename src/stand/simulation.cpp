@@ -1,5 +1,6 @@
 #include "stand/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <spdlog/spdlog.h>
@@ -16,13 +17,19 @@
 namespace heliostand {
 namespace {
 
+// In the scenario's order: the events that fire in one year are applied as the file lists them.
 std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
+  std::vector<const ThinningEvent*> in_file_order;
+  for (const auto& event : scenario.thinning) in_file_order.push_back(&event);
+  std::stable_sort(in_file_order.begin(), in_file_order.end(),
+                   [](const ThinningEvent* a, const ThinningEvent* b) { return a->scenario_order < b->scenario_order; });
   std::vector<ScheduledThinning> events;
-  for (const auto& event : scenario.thinning)
-    events.push_back({event.age_years,
-                      ThinningRule{event.method, event.ids, event.target_stems_per_ha,
-                                   event.target_basal_area_m2_per_ha},
-                      event.reason, event.protect_habitat_trees});
+  for (const ThinningEvent* event : in_file_order)
+    events.push_back({event->age_years,
+                      ThinningRule{event->method, event->ids, event->target_stems_per_ha,
+                                   event->target_basal_area_m2_per_ha, event->remove_fraction,
+                                   event->remove_basal_area_fraction, event->crop_trees, event->dbh_class, event->rows},
+                      event->reason, event->protect_habitat_trees, event->condition, event->repeat_every_years});
   return events;
 }
 

@@ -11,14 +11,19 @@
 #include "stand/hegyi_index.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
+#include "stand/thinning_trigger.hpp"
 
 namespace heliostand {
 
 struct ScheduledThinning {
-  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age
+  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age (no condition)
   ThinningRule rule;
   std::string reason;     // label in events.csv, e.g. "first thinning"
   bool protect_habitat_trees = true;  // trees with hollows are kept
+  std::optional<StandCondition> condition;  // instead of the age: the stand state that fires it
+  std::optional<int> repeat_every_years;    // re-arms (stand/thinning_trigger.hpp)
+
+  ThinningTrigger trigger() const { return {stand_age, condition, repeat_every_years}; }
 };
 
 // The competitors a tree counts (stand/hegyi_index.hpp): within a radius, across the plot's edges as they are.
@@ -29,6 +34,7 @@ struct CompetitionNeighbourhood {
 
 class Stand {
  public:
+  // `thinning` in the order the events of one year are applied (the scenario's).
   Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
         std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition = {});
 
@@ -51,7 +57,8 @@ class Stand {
   // Step 5. Suppression (growth-based, then crowding above the density limit) and background mortality
   // (stand/mortality.hpp). Returns the deaths.
   std::vector<TreeEvent> apply_mortality(std::uint64_t seed);
-  // Step 6. Thinnings scheduled for the current stand age. Returns the removals, in removal order.
+  // Step 6. The thinnings whose trigger fires this year (stand/thinning_trigger.hpp), in order, each seeing the
+  // stand the one before left. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
   // Hegyi's competition index of every tree (trees() order) among the living; NaN for trees not alive.
@@ -59,7 +66,10 @@ class Stand {
   const CompetitionNeighbourhood& competition() const { return competition_; }
 
  private:
-  std::vector<TreeEvent> apply(const ScheduledThinning& event);
+  StandMeasures measures() const;
+  std::vector<TreeEvent> apply(const ScheduledThinning& event, const std::string& why);
+  std::vector<ThinningCandidate> candidates_for(const ScheduledThinning& event, const std::vector<std::size_t>& living) const;
+  std::vector<int> planting_rows(const RowSettings& settings) const;
   std::vector<TreeEvent> die_of_crowding();
   TreeEvent end_of(StandTree& tree, TreeStatus status, const std::string& reason, TreeEventKind kind);
 
@@ -67,6 +77,7 @@ class Stand {
   int stand_age_;
   std::vector<StandTree> trees_;
   std::vector<ScheduledThinning> thinning_;
+  std::vector<std::optional<int>> last_fired_age_;  // per scheduled thinning
   CompetitionNeighbourhood competition_;
 };
 
