@@ -15,11 +15,12 @@ namespace heliostand {
 namespace scenario_detail {
 
 std::span<const TableParserEntry> scenario_table_parsers() {
-  static constexpr std::array<TableParserEntry, 10> parsers{{
+  static constexpr std::array<TableParserEntry, 11> parsers{{
       {"stand", parse_stand},
       {"run", parse_run},
       {"species", parse_species},
       {"light", parse_light},
+      {"competition", parse_competition},  // before thinning: its radius is crop-tree release's default
       {"thinning", parse_thinning},
       {"roots", parse_roots},  // after species: [roots.SPECIES] names a species
       {"soil", parse_soil},

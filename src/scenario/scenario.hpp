@@ -39,7 +39,9 @@ struct Scenario {
   std::map<std::string, SpeciesParameters> species;  // by name; SpeciesParameters::name = the key
   LightParameters light;
   CompetitionSettings competition;      // [competition]
-  std::vector<ThinningEvent> thinning;  // sorted by age (file order among equal ages)
+  // Fixed-age events sorted by age (file order among equal ages), then the triggered ones in file order.
+  // ThinningEvent::scenario_order keeps the file order, in which the events of one year are applied.
+  std::vector<ThinningEvent> thinning;
   RootsSettings roots;                  // [roots], [soil], [coupling], [[root_pruning]]
   Survey survey;                        // read, checked and imputed; its warnings are for the caller to log
 
