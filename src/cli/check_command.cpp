@@ -10,6 +10,22 @@
 namespace heliostand::cli {
 namespace {
 
+// "age 40", "age 40, then every 5 years", "when basal area > 40 m2/ha, again after 5 years or more".
+std::string when_text(const ThinningEvent& event) {
+  std::string when;
+  if (event.at_fixed_age()) {
+    when = fmt::format("age {}", event.age_years);
+  } else if (event.condition->measure == StandCondition::Measure::basal_area_m2_per_ha) {
+    when = fmt::format("when basal area > {:g} m2/ha", event.condition->threshold);
+  } else {
+    when = fmt::format("when top height >= {:g} m", event.condition->threshold);
+  }
+  if (event.repeat_every_years)
+    when += event.at_fixed_age() ? fmt::format(", then every {} years", *event.repeat_every_years)
+                                 : fmt::format(", again after {} years or more", *event.repeat_every_years);
+  return when;
+}
+
 void print_summary(const Scenario& scenario) {
   double basal_area = 0;
   for (const auto& tree : scenario.survey.trees) basal_area += basal_area_m2(tree.dbh_cm);
@@ -22,7 +38,7 @@ void print_summary(const Scenario& scenario) {
              scenario.stand.age_at_survey_years, scenario.final_age_years(), scenario.run.years,
              scenario.run.seed, scenario.run.output_interval_years);
   for (const auto& event : scenario.thinning)
-    fmt::print("thinning   age {}: {} ({}{})\n", event.age_years, event.reason, thinning_method_name(event.method),
+    fmt::print("thinning   {}: {} ({}{})\n", when_text(event), event.reason, thinning_method_name(event.method),
                event.protect_habitat_trees ? "" : ", habitat trees not protected");
   std::vector<std::string> habitat;
   std::size_t hollows = 0;

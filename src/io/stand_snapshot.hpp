@@ -42,6 +42,8 @@ struct TreeSnapshot {
   double root_length_m = std::numeric_limits<double>::quiet_NaN();
   double root_max_depth_m = std::numeric_limits<double>::quiet_NaN();
   double root_uptake = std::numeric_limits<double>::quiet_NaN();  // available uptake Σ W_j·moisture·nutrient
+  // Hegyi's competition index among the living trees (stand/hegyi_index.hpp), 1/m; NaN when the tree is gone.
+  double hegyi_index = std::numeric_limits<double>::quiet_NaN();
 
   // Geometry. `shoots` is a view into the tree's own shoot list (copying millions of shoots per output
   // year would cost more than writing them): it must stay valid while the snapshot is being written.

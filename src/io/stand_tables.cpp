@@ -91,6 +91,7 @@ const std::vector<OutputColumn>& trees_columns() {
       {"root_length_m", "m", "total length of its living root segments"},
       {"root_max_depth_m", "m", "depth of its deepest root segment end"},
       {"root_uptake", "m", "available uptake Σ W_j × moisture × nutrient at its root tips"},
+      {"hegyi_index", "1/m", "Hegyi's competition index among the living trees within [competition] hegyi_radius_m"},
   };
   return columns;
 }
@@ -136,6 +137,7 @@ void write_stand_table_row(CsvWriter& csv, const StandTableRow& row) {
 void write_trees_header(CsvWriter& csv) { csv.header(column_names(trees_columns())); }
 
 void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
+  constexpr int kCompetitionIndex = 4;  // 1/m: a 20 cm neighbour 2 m from a 20 cm tree adds 0.5
   for (const TreeSnapshot& tree : snapshot.trees) {
     csv.integer(snapshot.stand_age)
         .integer(tree.id)
@@ -159,6 +161,7 @@ void write_tree_rows(CsvWriter& csv, const StandSnapshot& snapshot) {
         .number(tree.root_length_m, kMetres)
         .number(tree.root_max_depth_m, kMetres)
         .number(tree.root_uptake, kLight)
+        .number(tree.hegyi_index, kCompetitionIndex)
         .end_row();
   }
 }

@@ -15,11 +15,12 @@ namespace heliostand {
 namespace scenario_detail {
 
 std::span<const TableParserEntry> scenario_table_parsers() {
-  static constexpr std::array<TableParserEntry, 10> parsers{{
+  static constexpr std::array<TableParserEntry, 11> parsers{{
       {"stand", parse_stand},
       {"run", parse_run},
       {"species", parse_species},
       {"light", parse_light},
+      {"competition", parse_competition},  // before thinning: its radius is crop-tree release's default
       {"thinning", parse_thinning},
       {"roots", parse_roots},  // after species: [roots.SPECIES] names a species
       {"soil", parse_soil},
@@ -111,7 +112,7 @@ void Scenario::set_years(int years) {
   if (years < 1) problems.push_back({label, 0, "run.years", fmt::format("--years must be at least 1, got {}", years)});
   const int final_age = stand.age_at_survey_years + years;
   for (const auto& event : thinning) {
-    if (event.age_years > final_age) {
+    if (event.at_fixed_age() && event.age_years > final_age) {
       problems.push_back({label, event.line, "run.years",
                           fmt::format("--years {} ends the run at stand age {}, before the thinning at age {}", years,
                                       final_age, event.age_years)});

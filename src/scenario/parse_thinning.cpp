@@ -1,9 +1,11 @@
+// [[thinning]] tables: when (parse_thinning_when.cpp), which method, and the method's parameters. Every key a method
+// does not use is an error, as is a missing key it needs; the checks against the survey are in check_thinning.cpp.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
-#include <map>
-#include <numeric>
-#include <set>
+#include <array>
+#include <string_view>
 
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
@@ -12,11 +14,79 @@ namespace heliostand::scenario_detail {
 
 namespace {
 
-std::optional<ThinningMethod> method_named(std::string_view name) {
-  for (auto method : {ThinningMethod::ids, ThinningMethod::from_below, ThinningMethod::from_above}) {
-    if (thinning_method_name(method) == name) return method;
+using namespace std::string_view_literals;
+
+constexpr std::array size_targets{"target_stems_per_ha"sv, "target_basal_area_m2_per_ha"sv, "remove_fraction"sv,
+                                  "remove_basal_area_fraction"sv};
+
+// Every key that parameterises some method, in the order problems about them are listed.
+constexpr std::array method_parameters{
+    "ids"sv,           "target_stems_per_ha"sv, "target_basal_area_m2_per_ha"sv, "remove_fraction"sv,
+    "remove_basal_area_fraction"sv, "crop_trees_per_ha"sv, "crop_tree_spacing_m"sv,   "competitor_radius_m"sv,
+    "competitors_per_crop_tree"sv,  "dbh_min_cm"sv,        "dbh_max_cm"sv,            "row_interval"sv,
+    "first_row"sv,                  "row_azimuth_deg"sv,   "row_tolerance_m"sv};
+
+bool is_size_method(ThinningMethod method) {
+  return method == ThinningMethod::from_below || method == ThinningMethod::from_above ||
+         method == ThinningMethod::neutral;
+}
+
+bool method_uses(ThinningMethod method, std::string_view key) {
+  auto one_of = [&](std::initializer_list<std::string_view> keys) {
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+  };
+  switch (method) {
+    case ThinningMethod::ids: return key == "ids";
+    case ThinningMethod::from_below:
+    case ThinningMethod::from_above:
+    case ThinningMethod::neutral: return std::find(size_targets.begin(), size_targets.end(), key) != size_targets.end();
+    case ThinningMethod::crop_tree:
+      return one_of({"crop_trees_per_ha", "crop_tree_spacing_m", "competitor_radius_m", "competitors_per_crop_tree"});
+    case ThinningMethod::dbh_class: return one_of({"dbh_min_cm", "dbh_max_cm", "remove_fraction"});
+    case ThinningMethod::rows: return one_of({"row_interval", "first_row", "row_azimuth_deg", "row_tolerance_m"});
   }
+  return false;
+}
+
+// What a "not used" message tells the user about the method instead.
+std::string_view how_it_chooses(ThinningMethod method) {
+  switch (method) {
+    case ThinningMethod::ids: return "remove the key or change the method";
+    case ThinningMethod::from_below:
+    case ThinningMethod::from_above:
+    case ThinningMethod::neutral: return "it chooses trees by size";
+    case ThinningMethod::crop_tree: return "it chooses crop trees and removes their competitors";
+    case ThinningMethod::dbh_class: return "it chooses trees by DBH class";
+    case ThinningMethod::rows: return "it chooses planted rows";
+  }
+  return "";
+}
+
+struct RequiredKey {
+  ThinningMethod method;
+  std::string_view key;
+  std::string_view why;
+};
+constexpr std::array required_keys{
+    RequiredKey{ThinningMethod::ids, "ids", "method \"ids\" names the trees to remove"},
+    RequiredKey{ThinningMethod::crop_tree, "crop_trees_per_ha", "method \"crop_tree\" needs how many crop trees per ha"},
+    RequiredKey{ThinningMethod::crop_tree, "crop_tree_spacing_m",
+                "method \"crop_tree\" needs the least distance between two crop trees"},
+    RequiredKey{ThinningMethod::rows, "row_interval", "method \"rows\" removes every row_interval-th planted row"},
+};
+
+std::optional<ThinningMethod> method_named(std::string_view name) {
+  for (auto method : all_thinning_methods)
+    if (thinning_method_name(method) == name) return method;
   return std::nullopt;
+}
+
+std::string method_choices() {
+  std::vector<std::string> quoted;
+  for (auto method : all_thinning_methods) quoted.push_back(fmt::format("\"{}\"", thinning_method_name(method)));
+  const std::string last = quoted.back();
+  quoted.pop_back();
+  return fmt::format("{} or {}", fmt::join(quoted, ", "), last);
 }
 
 // ids = ["T3", 17, ...]: survey ids are text; integers are accepted for numeric ids.
@@ -44,61 +114,111 @@ std::vector<std::string> read_ids(TomlTableReader& reader) {
   return ids;
 }
 
-void check_age(TomlTableReader& reader, const ScenarioDraft& draft, int age) {
-  if (!draft.age_valid) return;
-  const int survey_age = draft.scenario.stand.age_at_survey_years;
-  if (age < survey_age) {
-    reader.problem("age", fmt::format("thinning at age {} is before the survey (stand age {})", age, survey_age));
-  } else if (draft.years_valid && age > survey_age + draft.scenario.run.years) {
-    reader.problem("age", fmt::format("thinning at age {} is after the end of the run (stand age {})", age,
-                                      survey_age + draft.scenario.run.years));
-  }
+constexpr NumberRange fraction{0.0, 1.0, true, false};  // (0, 1]
+
+void read_size_targets(TomlTableReader& reader, ThinningEvent& event) {
+  event.target_stems_per_ha = reader.number("target_stems_per_ha", positive());
+  event.target_basal_area_m2_per_ha = reader.number("target_basal_area_m2_per_ha", positive());
+  event.remove_fraction = reader.number("remove_fraction", fraction);
+  event.remove_basal_area_fraction = reader.number("remove_basal_area_fraction", fraction);
+}
+
+void read_crop_tree_keys(TomlTableReader& reader, const ScenarioDraft& draft, CropTreeSettings& crop_trees) {
+  if (auto n = reader.number("crop_trees_per_ha", positive())) crop_trees.crop_trees_per_ha = *n;
+  if (auto spacing = reader.number("crop_tree_spacing_m", non_negative())) crop_trees.spacing_m = *spacing;
+  crop_trees.competitor_radius_m = reader.number("competitor_radius_m", positive())
+                                       .value_or(draft.scenario.competition.hegyi_radius_m);
+  if (auto n = reader.integer("competitors_per_crop_tree", at_least(1)))
+    crop_trees.competitors_per_crop_tree = static_cast<int>(*n);
+}
+
+void read_dbh_class_keys(TomlTableReader& reader, DbhClass& dbh_class) {
+  const auto min = reader.number("dbh_min_cm", non_negative());
+  const auto max = reader.number("dbh_max_cm", positive());
+  if (min) dbh_class.min_cm = *min;
+  if (max) dbh_class.max_cm = *max;
+  if (min && max && *max <= *min)
+    reader.problem("dbh_max_cm", fmt::format("must be greater than dbh_min_cm ({:g}), got {:g}", *min, *max));
+}
+
+void read_row_keys(TomlTableReader& reader, RowSettings& rows) {
+  if (auto k = reader.integer("row_interval", at_least(2))) rows.interval = static_cast<int>(*k);
+  if (auto first = reader.integer("first_row", at_least(1))) rows.first_row = static_cast<int>(*first);
+  rows.azimuth_deg = reader.number("row_azimuth_deg", NumberRange{0.0, 360.0, false, true});
+  if (auto tolerance = reader.number("row_tolerance_m", positive())) rows.tolerance_m = *tolerance;
+}
+
+void check_method_keys(TomlTableReader& reader, ThinningMethod method) {
+  for (const auto& required : required_keys)
+    if (required.method == method && !reader.table().contains(required.key))
+      reader.problems().add(reader.line(), reader.key_path(required.key),
+                            fmt::format("required key missing ({})", required.why));
+  for (auto key : method_parameters)
+    if (reader.table().contains(key) && !method_uses(method, key))
+      reader.problem(key, fmt::format("not used by method \"{}\" ({})", thinning_method_name(method),
+                                      how_it_chooses(method)));
+}
+
+void check_one_size_target(TomlTableReader& reader, ThinningMethod method, const std::string& path) {
+  std::vector<std::string_view> given;
+  for (auto key : size_targets)
+    if (reader.table().contains(key)) given.push_back(key);
+  if (given.size() == 1) return;
+  reader.problems().add(reader.line(), path,
+                        fmt::format("method \"{}\" needs exactly one of target_stems_per_ha, "
+                                    "target_basal_area_m2_per_ha, remove_fraction and remove_basal_area_fraction, "
+                                    "got {}",
+                                    thinning_method_name(method),
+                                    given.empty() ? std::string("none") : fmt::format("{}", fmt::join(given, " and "))));
+}
+
+void check_dbh_class_bounds(TomlTableReader& reader) {
+  if (reader.table().contains("dbh_min_cm") || reader.table().contains("dbh_max_cm")) return;
+  reader.problems().add(reader.line(), reader.key_path("dbh_min_cm"),
+                        "required key missing (method \"dbh_class\" needs the class: dbh_min_cm, dbh_max_cm or both)");
+}
+
+ScenarioDraft::ThinningKeys key_lines(const TomlTableReader& reader, const std::string& path) {
+  ScenarioDraft::ThinningKeys keys{path};
+  keys.ids_line = reader.line_of("ids");
+  auto target = std::find_if(size_targets.begin(), size_targets.end(),
+                             [&](std::string_view key) { return reader.table().contains(key); });
+  keys.target_line = reader.line_of(target != size_targets.end() ? *target : "target_basal_area_m2_per_ha");
+  keys.method_line = reader.line_of("method");
+  keys.first_row_line = reader.line_of("first_row");
+  keys.crop_trees_line = reader.line_of("crop_trees_per_ha");
+  return keys;
 }
 
 void parse_event(const toml::table& table, const std::string& path, ScenarioDraft& draft, ScenarioProblems& problems) {
   TomlTableReader reader(table, path, problems);
   ThinningEvent event;
   event.line = reader.line();
-  ScenarioDraft::ThinningKeys keys{path, 0, 0};
+  event.scenario_order = static_cast<int>(draft.scenario.thinning.size());
 
-  const auto age = reader.integer("age", at_least(1), true);
-  if (age) {
-    event.age_years = static_cast<int>(*age);
-    check_age(reader, draft, event.age_years);
-  }
+  read_thinning_when(reader, draft, event);
   std::optional<ThinningMethod> method;
   if (auto name = reader.string("method", true)) {
     method = method_named(*name);
-    if (!method) reader.problem("method", fmt::format("expected \"ids\", \"from_below\" or \"from_above\", got \"{}\"", *name));
+    if (!method) reader.problem("method", fmt::format("expected {}, got \"{}\"", method_choices(), *name));
   }
   event.ids = read_ids(reader);
-  keys.ids_line = reader.line_of("ids");
-  event.target_stems_per_ha = reader.number("target_stems_per_ha", positive());
-  event.target_basal_area_m2_per_ha = reader.number("target_basal_area_m2_per_ha", positive());
-  const bool has_ids = reader.table().contains("ids");
-  const bool has_stems = reader.table().contains("target_stems_per_ha");
-  const bool has_basal_area = reader.table().contains("target_basal_area_m2_per_ha");
-  keys.target_line = reader.line_of(has_stems ? "target_stems_per_ha" : "target_basal_area_m2_per_ha");
+  read_size_targets(reader, event);
+  read_crop_tree_keys(reader, draft, event.crop_trees);
+  read_dbh_class_keys(reader, event.dbh_class);
+  read_row_keys(reader, event.rows);
   if (auto reason = reader.string("reason")) event.reason = *reason;
   if (auto protect = reader.boolean("protect_habitat_trees")) event.protect_habitat_trees = *protect;
   reader.report_unknown_keys();
 
-  if (method == ThinningMethod::ids) {
-    if (!has_ids) problems.add(reader.line(), reader.key_path("ids"), "required key missing (method \"ids\" names the trees to remove)");
-    if (has_stems) reader.problem("target_stems_per_ha", "not used by method \"ids\" (remove the key or change the method)");
-    if (has_basal_area) reader.problem("target_basal_area_m2_per_ha", "not used by method \"ids\" (remove the key or change the method)");
-  } else if (method) {
-    if (has_ids) reader.problem("ids", fmt::format("not used by method \"{}\" (it chooses trees by size)", thinning_method_name(*method)));
-    if (has_stems == has_basal_area) {
-      problems.add(reader.line(), path,
-                   fmt::format("method \"{}\" needs exactly one of target_stems_per_ha and "
-                               "target_basal_area_m2_per_ha, got {}",
-                               thinning_method_name(*method), has_stems ? "both" : "neither"));
-    }
+  if (method) {
+    check_method_keys(reader, *method);
+    if (is_size_method(*method)) check_one_size_target(reader, *method, path);
+    if (*method == ThinningMethod::dbh_class) check_dbh_class_bounds(reader);
+    event.method = *method;
   }
-  if (method) event.method = *method;
+  draft.thinning_keys.push_back(key_lines(reader, path));
   draft.scenario.thinning.push_back(std::move(event));
-  draft.thinning_keys.push_back(std::move(keys));
 }
 
 }  // namespace
@@ -106,61 +226,6 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
 void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
   for_each_table_of_array(node, "thinning", problems,
                           [&](const toml::table& table, const std::string& path) { parse_event(table, path, draft, problems); });
-}
-
-void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& problems) {
-  auto& events = draft.scenario.thinning;
-  std::vector<std::size_t> order(events.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return events[a].age_years < events[b].age_years; });
-
-  const Survey& survey = draft.scenario.survey;
-  std::set<std::string> surveyed, habitat;
-  for (const auto& tree : survey.trees) {
-    surveyed.insert(tree.id);
-    if (!tree.hollows.empty()) habitat.insert(tree.id);
-  }
-  std::map<std::string, std::string> removed_by;  // id -> key path of the event removing it
-  const double area_ha = draft.scenario.plot_area_ha();
-  // The most stems/ha the stand can have at each event: no event adds trees, so the survey density,
-  // lowered by each earlier stems target and each earlier removal by id.
-  double max_stems_per_ha = static_cast<double>(survey.trees.size()) / area_ha;
-
-  for (std::size_t index : order) {
-    const ThinningEvent& event = events[index];
-    const auto& keys = draft.thinning_keys[index];
-    if (event.method == ThinningMethod::ids) {
-      for (const auto& id : event.ids) {
-        if (!surveyed.count(id)) {
-          problems.add(keys.ids_line, keys.path + ".ids", fmt::format("tree id \"{}\" is not in the survey", id));
-        } else if (event.protect_habitat_trees && habitat.count(id)) {
-          // Naming a protected tree would silently do nothing: say so, and how to remove it on purpose.
-          problems.add(keys.ids_line, keys.path + ".ids",
-                       fmt::format("tree id \"{}\" carries a hollow (a habitat tree, protected from thinning); set "
-                                   "protect_habitat_trees = false in this thinning to remove it",
-                                   id));
-        } else if (auto [it, fresh] = removed_by.emplace(id, keys.path); !fresh) {
-          problems.add(keys.ids_line, keys.path + ".ids",
-                       fmt::format("tree id \"{}\" is already removed by {}", id, it->second));
-        } else {
-          max_stems_per_ha -= 1.0 / area_ha;
-        }
-      }
-    } else if (event.target_stems_per_ha) {
-      const double target = *event.target_stems_per_ha;
-      if (target >= max_stems_per_ha - 1e-9) {
-        problems.add(keys.target_line, keys.path + ".target_stems_per_ha",
-                     fmt::format("target {:g} stems/ha is not below the stand's density at that age (at most {:.1f} "
-                                 "stems/ha: {} surveyed trees on {:g} ha, less earlier thinnings)",
-                                 target, max_stems_per_ha, survey.trees.size(), area_ha));
-      } else {
-        max_stems_per_ha = target;
-      }
-    }
-  }
-  std::vector<ThinningEvent> sorted;
-  for (std::size_t index : order) sorted.push_back(std::move(events[index]));
-  events = std::move(sorted);
 }
 
 }  // namespace heliostand::scenario_detail

@@ -10,6 +10,7 @@
 #include "architecture/species.hpp"
 #include "light/light_parameters.hpp"
 #include "compute/device_choice.hpp"
+#include "scenario/competition_settings.hpp"
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
 #include "survey/plot_bounds.hpp"
@@ -40,7 +41,10 @@ struct Scenario {
   RunSettings run;
   std::map<std::string, SpeciesParameters> species;  // by name; SpeciesParameters::name = the key
   LightParameters light;
-  std::vector<ThinningEvent> thinning;  // sorted by age (file order among equal ages)
+  CompetitionSettings competition;      // [competition]
+  // Fixed-age events sorted by age (file order among equal ages), then the triggered ones in file order.
+  // ThinningEvent::scenario_order keeps the file order, in which the events of one year are applied.
+  std::vector<ThinningEvent> thinning;
   RootsSettings roots;                  // [roots], [soil], [coupling], [[root_pruning]]
   Survey survey;                        // read, checked and imputed; its warnings are for the caller to log
 

@@ -14,6 +14,7 @@
 #include "light/light_parameters.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/scenario_problems.hpp"
+#include "scenario/toml_table_reader.hpp"
 #include "survey/check_hollows.hpp"
 
 namespace heliostand::scenario_detail {
@@ -30,11 +31,14 @@ struct ScenarioDraft {
   std::optional<std::string> default_species_key;  // stand.default_species as written
   int default_species_line = 0;
   std::vector<std::pair<std::string, int>> species_order;  // names in file order, with their lines
-  // Per thinning event (same order as scenario.thinning, file order): where its ids / target were written.
+  // Per thinning event (same order as scenario.thinning, file order): where its keys were written.
   struct ThinningKeys {
     std::string path;  // "thinning[2]"
     int ids_line = 0;
     int target_line = 0;
+    int method_line = 0;
+    int first_row_line = 0;
+    int crop_trees_line = 0;
   };
   std::vector<ThinningKeys> thinning_keys;
   // [[hollow]] entries, attached to their survey records once the survey is read.
@@ -57,7 +61,10 @@ void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
 void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_species(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+void parse_competition(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
+// The "when" of one [[thinning]] (parse_thinning_when.cpp): age, or a condition, and its repetition.
+void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningEvent& event);
 // Roots, soil, crown–root coupling and root pruning (parse_roots.cpp, parse_soil.cpp, parse_coupling.cpp,
 // parse_root_pruning.cpp): all fill Scenario::roots.
 void parse_roots(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);

@@ -9,6 +9,10 @@ std::string_view thinning_method_name(ThinningMethod method) {
     case ThinningMethod::ids: return "ids";
     case ThinningMethod::from_below: return "from_below";
     case ThinningMethod::from_above: return "from_above";
+    case ThinningMethod::neutral: return "neutral";
+    case ThinningMethod::crop_tree: return "crop_tree";
+    case ThinningMethod::dbh_class: return "dbh_class";
+    case ThinningMethod::rows: return "rows";
   }
   return "ids";
 }

@@ -1,5 +1,6 @@
 #include "stand/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <spdlog/spdlog.h>
@@ -16,13 +17,19 @@
 namespace heliostand {
 namespace {
 
+// In the scenario's order: the events that fire in one year are applied as the file lists them.
 std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
+  std::vector<const ThinningEvent*> in_file_order;
+  for (const auto& event : scenario.thinning) in_file_order.push_back(&event);
+  std::stable_sort(in_file_order.begin(), in_file_order.end(),
+                   [](const ThinningEvent* a, const ThinningEvent* b) { return a->scenario_order < b->scenario_order; });
   std::vector<ScheduledThinning> events;
-  for (const auto& event : scenario.thinning)
-    events.push_back({event.age_years,
-                      ThinningRule{event.method, event.ids, event.target_stems_per_ha,
-                                   event.target_basal_area_m2_per_ha},
-                      event.reason, event.protect_habitat_trees});
+  for (const ThinningEvent* event : in_file_order)
+    events.push_back({event->age_years,
+                      ThinningRule{event->method, event->ids, event->target_stems_per_ha,
+                                   event->target_basal_area_m2_per_ha, event->remove_fraction,
+                                   event->remove_basal_area_fraction, event->crop_trees, event->dbh_class, event->rows},
+                      event->reason, event->protect_habitat_trees, event->condition, event->repeat_every_years});
   return events;
 }
 
@@ -33,6 +40,14 @@ LightParameters light_for(const Scenario& scenario) {
   light.plot_x_max = scenario.stand.plot.x_max;
   light.plot_y_max = scenario.stand.plot.y_max;
   return light;
+}
+
+// Competitors are counted across periodic edges when light is (the plot a tile of a larger plantation), over the
+// domain the light solver wraps.
+CompetitionNeighbourhood competition_for(const Scenario& scenario) {
+  const LightParameters light = light_for(scenario);
+  return {scenario.competition.hegyi_radius_m,
+          StandEdges{light.periodic, PlotBounds{light.plot_x_min, light.plot_y_min, light.plot_x_max, light.plot_y_max}}};
 }
 
 }  // namespace
@@ -65,7 +80,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
                report.unusable);
   Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
-              schedule(scenario));
+              schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
   auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand); });
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);

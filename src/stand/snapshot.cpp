@@ -48,12 +48,14 @@ StandSnapshot SnapshotTracker::take(const Stand& stand, int year_index) {
   snapshot.stand_age = stand.stand_age();
   snapshot.year_index = year_index;
   std::vector<const StandTree*> standing;  // per snapshot tree: the tree whose trunk to mesh, or null
+  const std::vector<double> hegyi = stand.hegyi_indices();
   for (std::size_t i = 0; i < trees.size(); ++i) {
     if (!trees[i].alive()) {
       if (written_as_gone_[i]) continue;
       written_as_gone_[i] = true;
     }
     snapshot.trees.push_back(snapshot_of(trees[i]));
+    snapshot.trees.back().hegyi_index = hegyi[i];
     standing.push_back(mesh_trunks_ && trees[i].status != TreeStatus::removed ? &trees[i] : nullptr);
   }
   // A felled tree leaves no stem; a dead one stands as a snag. Stems are meshed on all cores.

@@ -1,22 +1,28 @@
 #include "stand/stand.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
 #include "stand/light_response.hpp"
 #include "stand/mortality.hpp"
+#include "geometry/planting_rows.hpp"
+#include "stand/stand_metrics.hpp"
 
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-             std::vector<ScheduledThinning> thinning)
+             std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition)
     : plot_area_ha_(plot_area_ha),
       stand_age_(stand_age),
       trees_(std::move(trees)),
-      thinning_(std::move(thinning)) {}
+      thinning_(std::move(thinning)),
+      last_fired_age_(thinning_.size()),
+      competition_(competition) {}
 
 void Stand::grow_year() {
   ++stand_age_;
@@ -125,32 +131,104 @@ std::vector<TreeEvent> Stand::die_of_crowding() {
 
 std::vector<TreeEvent> Stand::thin() {
   std::vector<TreeEvent> removed;
-  for (const auto& event : thinning_) {
-    if (event.stand_age != stand_age_) continue;
-    auto events = apply(event);
+  for (std::size_t k = 0; k < thinning_.size(); ++k) {
+    const ScheduledThinning& event = thinning_[k];
+    // Conditions read the stand as the events before this one left it this year.
+    const StandMeasures stand = event.condition ? measures() : StandMeasures{};
+    const auto why = why_thinning_fires(event.trigger(), stand_age_, last_fired_age_[k], stand);
+    if (!why) continue;
+    last_fired_age_[k] = stand_age_;
+    auto events = apply(event, *why);
     removed.insert(removed.end(), events.begin(), events.end());
   }
   return removed;
 }
 
-std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event) {
+StandMeasures Stand::measures() const {
+  std::vector<TreeMeasurement> living;
+  for (const auto& tree : trees_)
+    if (tree.alive()) living.push_back({tree.tree.dbh_cm(), tree.tree.height_m(), 0.0});
+  const StandMetrics metrics = measure_stand(living, plot_area_ha_);
+  return {metrics.basal_area_m2_per_ha, metrics.top_height_m};
+}
+
+std::vector<double> Stand::hegyi_indices() const {
   std::vector<std::size_t> living;
-  std::vector<ThinningCandidate> candidates;
+  std::vector<glm::dvec2> positions;
+  std::vector<double> dbh;
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     if (!trees_[i].alive()) continue;
     living.push_back(i);
-    candidates.push_back({trees_[i].label, trees_[i].tree.dbh_cm(),
-                          event.protect_habitat_trees && trees_[i].is_habitat_tree()});
+    positions.emplace_back(trees_[i].tree.stem_base());
+    dbh.push_back(trees_[i].tree.dbh_cm());
   }
+  const Neighbourhood stems(positions, competition_.edges);
+  const std::vector<double> of_living = heliostand::hegyi_indices(stems, dbh, competition_.radius_m);
+  std::vector<double> indices(trees_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < living.size(); ++k) indices[living[k]] = of_living[k];
+  return indices;
+}
+
+// Rows come from every planting position, the trees that have left included: the numbering stays the same from
+// one row thinning to the next. The scenario check found rows in the survey's positions, which are these.
+std::vector<int> Stand::planting_rows(const RowSettings& settings) const {
+  std::vector<glm::dvec2> positions;
+  for (const auto& tree : trees_) positions.emplace_back(tree.tree.stem_base());
+  const PlantingRowsFound found = find_planting_rows(positions, settings.azimuth_deg, settings.tolerance_m);
+  if (found.rows) return found.rows->row_of;
+  spdlog::warn("age {}: no planting rows: {}", stand_age_, found.problem);
+  return std::vector<int>(trees_.size(), -1);
+}
+
+std::vector<ThinningCandidate> Stand::candidates_for(const ScheduledThinning& event,
+                                                     const std::vector<std::size_t>& living) const {
+  std::vector<ThinningCandidate> candidates;
+  for (std::size_t i : living) {
+    const StandTree& tree = trees_[i];
+    const glm::dvec3 base = tree.tree.stem_base();
+    candidates.push_back({tree.label, tree.tree.dbh_cm(), event.protect_habitat_trees && tree.is_habitat_tree(),
+                          tree.tree.height_m(), base.x, base.y});
+  }
+  // Only the regimes that read them pay for the neighbourhood and the rows.
+  if (event.rule.method == ThinningMethod::crop_tree) {
+    const auto hegyi = hegyi_indices();
+    for (std::size_t k = 0; k < living.size(); ++k) candidates[k].hegyi_index = hegyi[living[k]];
+  }
+  if (event.rule.method == ThinningMethod::rows) {
+    const auto rows = planting_rows(event.rule.rows);
+    for (std::size_t k = 0; k < living.size(); ++k) candidates[k].planting_row = rows[living[k]];
+  }
+  return candidates;
+}
+
+namespace {
+
+void log_removals(int stand_age, const ScheduledThinning& event, const std::string& why,
+                  const std::vector<TreeEvent>& removed, long kept_habitat_trees, double plot_area_ha) {
+  double basal_area = 0, volume = 0;
+  for (const auto& tree : removed) {
+    basal_area += basal_area_m2(tree.dbh_cm);
+    volume += tree.volume_m3;
+  }
+  const std::string kept = kept_habitat_trees > 0 ? fmt::format(", kept {} habitat trees", kept_habitat_trees) : "";
+  spdlog::info("age {}: {} ({}, {}) removed {} trees: {:.1f} stems/ha, basal area {:.2f} m²/ha, volume {:.1f} m³/ha{}",
+               stand_age, event.reason, thinning_method_name(event.rule.method), why, removed.size(),
+               static_cast<double>(removed.size()) / plot_area_ha, basal_area / plot_area_ha, volume / plot_area_ha,
+               kept);
+}
+
+}  // namespace
+
+std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event, const std::string& why) {
+  std::vector<std::size_t> living;
+  for (std::size_t i = 0; i < trees_.size(); ++i)
+    if (trees_[i].alive()) living.push_back(i);
+  const std::vector<ThinningCandidate> candidates = candidates_for(event, living);
   std::vector<TreeEvent> removed;
-  for (std::size_t chosen : select_for_thinning(event.rule, candidates, plot_area_ha_)) {
+  for (std::size_t chosen : select_for_thinning(event.rule, candidates, ThinningPlot{plot_area_ha_, competition_.edges}))
     removed.push_back(remove(trees_[living[chosen]], event.reason));
-  }
   const auto kept = std::count_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.is_protected; });
-  if (kept > 0)
-    spdlog::info("age {}: {} removed {} trees, kept {} habitat trees", stand_age_, event.reason, removed.size(), kept);
-  else
-    spdlog::info("age {}: {} removed {} trees", stand_age_, event.reason, removed.size());
+  log_removals(stand_age_, event, why, removed, kept, plot_area_ha_);
   return removed;
 }
 

@@ -8,23 +8,36 @@
 
 #include "io/tree_event.hpp"
 #include "light/light_solver.hpp"
+#include "stand/hegyi_index.hpp"
 #include "stand/mortality.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
+#include "stand/thinning_trigger.hpp"
 
 namespace heliostand {
 
 struct ScheduledThinning {
-  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age
+  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age (no condition)
   ThinningRule rule;
   std::string reason;     // label in events.csv, e.g. "first thinning"
   bool protect_habitat_trees = true;  // trees with hollows are kept
+  std::optional<StandCondition> condition;  // instead of the age: the stand state that fires it
+  std::optional<int> repeat_every_years;    // re-arms (stand/thinning_trigger.hpp)
+
+  ThinningTrigger trigger() const { return {stand_age, condition, repeat_every_years}; }
+};
+
+// The competitors a tree counts (stand/hegyi_index.hpp): within a radius, across the plot's edges as they are.
+struct CompetitionNeighbourhood {
+  double radius_m = default_competition_radius_m;
+  StandEdges edges;
 };
 
 class Stand {
  public:
+  // `thinning` in the order the events of one year are applied (the scenario's).
   Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-        std::vector<ScheduledThinning> thinning);
+        std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition = {});
 
   int stand_age() const { return stand_age_; }
   double plot_area_ha() const { return plot_area_ha_; }
@@ -45,11 +58,19 @@ class Stand {
   // Step 5. Suppression (growth-based, then crowding above the density limit) and background mortality
   // (stand/mortality.hpp). Returns the deaths.
   std::vector<TreeEvent> apply_mortality(std::uint64_t seed);
-  // Step 6. Thinnings scheduled for the current stand age. Returns the removals, in removal order.
+  // Step 6. The thinnings whose trigger fires this year (stand/thinning_trigger.hpp), in order, each seeing the
+  // stand the one before left. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
 
+  // Hegyi's competition index of every tree (trees() order) among the living; NaN for trees not alive.
+  std::vector<double> hegyi_indices() const;
+  const CompetitionNeighbourhood& competition() const { return competition_; }
+
  private:
-  std::vector<TreeEvent> apply(const ScheduledThinning& event);
+  StandMeasures measures() const;
+  std::vector<TreeEvent> apply(const ScheduledThinning& event, const std::string& why);
+  std::vector<ThinningCandidate> candidates_for(const ScheduledThinning& event, const std::vector<std::size_t>& living) const;
+  std::vector<int> planting_rows(const RowSettings& settings) const;
   std::vector<TreeEvent> die_of_crowding();
   // The tree leaves the living stand: removed by a thinning (cause thinning_cause, `reason` the scenario's) or
   // dead (cause and reason its death cause's code).
@@ -61,6 +82,8 @@ class Stand {
   int stand_age_;
   std::vector<StandTree> trees_;
   std::vector<ScheduledThinning> thinning_;
+  std::vector<std::optional<int>> last_fired_age_;  // per scheduled thinning
+  CompetitionNeighbourhood competition_;
 };
 
 }  // namespace heliostand

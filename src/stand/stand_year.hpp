@@ -5,7 +5,7 @@
 //   3 respond    new shoots bend toward the light or die of shade; trees without foliage die (cause "light")
 //   4 soil       roots grow in the shared soil; the crown–root balance sets next year's branching (optional)
 //   5 mortality  suppression and background deaths
-//   6 thinning   the thinnings scheduled for this age
+//   6 thinning   the thinnings whose age or condition comes due (stand/thinning_trigger.hpp)
 //   7 metrics    the living stand's inventory (every year); the snapshot of an output year, which it then measures
 //   8 write      stand_table.csv and events.csv (every year); trees.csv and the VTK year (every output year)
 // Year 0 is the established stand: steps 2, 4 (balance only), 6, 7 and 8; no growth and no response yet,

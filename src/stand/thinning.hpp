@@ -1,21 +1,33 @@
 #pragma once
-// Choosing the trees a thinning removes. Forestry thinning is stated either as an explicit list of
-// trees (a marking list) or as a rule: "from below" takes the smallest stems first (suppressed trees,
-// the usual low thinning), "from above" the largest first (crown thinning favouring the rest), until
-// the stand is down to a target density (stems/ha) or basal area (m²/ha).
+// Choosing the trees a thinning removes. Forestry thinning is stated either as an explicit list of trees (a
+// marking list) or as a regime (docs/formats.md [[thinning]]):
+//   from_below   the smallest stems first (suppressed trees, the usual low thinning)
+//   from_above   the largest first (crown thinning favouring the rest)
+//   neutral      evenly across the DBH distribution, which keeps its shape
+//     ... each to a target density (stems/ha), basal area (m²/ha), or a fraction of either;
+//   crop_tree    the strongest competitors of chosen crop trees (stand/crop_tree_thinning.hpp)
+//   dbh_class    all or a fraction of the trees of a DBH class
+//   rows         every k-th planted row (geometry/planting_rows.hpp)
+// Each regime is a pure function of the living trees (one file each); this is the dispatch.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "scenario/thinning_event.hpp"  // ThinningMethod
+#include "scenario/thinning_event.hpp"  // ThinningMethod and the regimes' settings
+#include "geometry/neighbourhood.hpp"     // StandEdges
 
 namespace heliostand {
 
 struct ThinningRule {
   ThinningMethod method = ThinningMethod::from_below;
   std::vector<std::string> ids;                     // with ThinningMethod::ids: survey labels to remove
-  std::optional<double> target_stems_per_ha;        // with from_below / from_above: exactly one target
+  std::optional<double> target_stems_per_ha;        // from_below / from_above / neutral: exactly one target
   std::optional<double> target_basal_area_m2_per_ha;
+  std::optional<double> remove_fraction;            // of the living stems (of the class, for dbh_class)
+  std::optional<double> remove_basal_area_fraction; // of the living basal area
+  CropTreeSettings crop_trees;
+  DbhClass dbh_class;
+  RowSettings rows;
 };
 
 // A living tree as thinning sees it.
@@ -23,13 +35,25 @@ struct ThinningCandidate {
   std::string label;
   double dbh_cm = 0;
   bool is_protected = false;  // habitat trees (hollows) are kept when protection is on
+  double height_m = 0;
+  double x_m = 0, y_m = 0;    // stem base
+  double hegyi_index = 0;     // competition it suffers (stand/hegyi_index.hpp), 1/m
+  int planting_row = -1;      // 0-based planting row (geometry/planting_rows.hpp); -1 when not known
+};
+
+// The plot the candidates stand on.
+struct ThinningPlot {
+  double area_ha = 0;
+  StandEdges edges;  // for distances between trees (crop-tree thinning)
 };
 
 // Indices (into `living`) of the trees to remove, in removal order. Protected trees are never chosen
 // (a rule whose target cannot be met without them removes what it can). Listed ids that are not
 // among `living` are ignored here: the scenario check reports them before the run starts.
-std::vector<std::size_t> select_for_thinning(const ThinningRule& rule,
-                                             const std::vector<ThinningCandidate>& living,
+std::vector<std::size_t> select_for_thinning(const ThinningRule& rule, const std::vector<ThinningCandidate>& living,
+                                             const ThinningPlot& plot);
+// The same on a plot whose edges do not matter to the rule (every rule but crop_tree).
+std::vector<std::size_t> select_for_thinning(const ThinningRule& rule, const std::vector<ThinningCandidate>& living,
                                              double plot_area_ha);
 
 double basal_area_m2(double dbh_cm);  // cross-section at breast height, π (d/200)²

@@ -94,9 +94,26 @@ TEST(StandTables, HeadersHaveTheDocumentedColumns) {
                                                   "height_m", "dbh_cm", "crown_base_m", "crown_radius_m",
                                                   "volume_m3", "leaf_balls", "mean_light", "light_budget",
                                                   "relative_light", "dbh_increment_cm", "root_length_m",
-                                                  "root_max_depth_m", "root_uptake"}));
+                                                  "root_max_depth_m", "root_uptake", "hegyi_index"}));
   EXPECT_EQ(records[2], (std::vector<std::string>{"stand_age", "tree_id", "label", "species", "event", "cause",
                                                   "reason", "dbh_cm", "height_m", "volume_m3"}));
+}
+
+TEST(StandTables, TreeRowEndsWithItsHegyiIndex) {
+  StandSnapshot snapshot;
+  snapshot.trees.resize(2);
+  snapshot.trees[0].hegyi_index = 1.23456;  // 1/m, four decimals
+  snapshot.trees[1].status = TreeStatus::removed;  // gone: no index (NaN), an empty field
+  std::ostringstream out;
+  CsvWriter csv(out);
+  write_trees_header(csv);
+  write_tree_rows(csv, snapshot);
+  const auto records = testing::parse_csv(out.str());
+  ASSERT_EQ(records.size(), 3u);
+  ASSERT_EQ(records[0].back(), "hegyi_index");
+  EXPECT_EQ(records[1].back(), "1.2346");
+  EXPECT_EQ(records[2].back(), "");
+  EXPECT_EQ(records[1].size(), records[0].size());
 }
 
 TEST(StandTables, EventRowCarriesSpeciesKindCauseCodeReasonLabelAndQuotedTexts) {

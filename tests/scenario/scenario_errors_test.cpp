@@ -44,7 +44,7 @@ TEST(ScenarioErrors, MissingTablesAndRequiredKeys) {
 TEST(ScenarioErrors, UnknownKeysAndTables) {
   EXPECT_THAT(scenario_problems("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
               ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
-                          "thinning, roots, soil, coupling, root_pruning, hollow)",
+                          "competition, thinning, roots, soil, coupling, root_pruning, hollow)",
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: device, output_interval, "
                           "seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
@@ -138,9 +138,10 @@ TEST(ScenarioErrors, ThinningStructure) {
                                                     "target_basal_area_m2_per_ha = 20\nnote = \"x\"\n"
                                                     "[[thinning]]\n"                                // 27
                                                     "age = 26\nmethod = \"ids\"\nids = [\"1\", 2.5]\n"),
-              ElementsAre("scenario.toml:11: key 'thinning[1].age': required key missing",
-                          "scenario.toml:12: key 'thinning[1].method': expected \"ids\", \"from_below\" or "
-                          "\"from_above\", got \"random\"",
+              ElementsAre("scenario.toml:11: key 'thinning[1].age': required key missing (or, instead of a fixed age, "
+                          "a condition: when_basal_area_exceeds_m2_per_ha or when_top_height_reaches_m)",
+                          "scenario.toml:12: key 'thinning[1].method': expected \"ids\", \"from_below\", "
+                          "\"from_above\", \"neutral\", \"crop_tree\", \"dbh_class\" or \"rows\", got \"random\"",
                           "scenario.toml:13: key 'thinning[2].ids': required key missing (method \"ids\" names the "
                           "trees to remove)",
                           "scenario.toml:16: key 'thinning[2].target_stems_per_ha': not used by method \"ids\" (remove "
@@ -148,11 +149,17 @@ TEST(ScenarioErrors, ThinningStructure) {
                           "scenario.toml:20: key 'thinning[3].ids': not used by method \"from_below\" (it chooses "
                           "trees by size)",
                           "scenario.toml:17: key 'thinning[3]': method \"from_below\" needs exactly one of "
-                          "target_stems_per_ha and target_basal_area_m2_per_ha, got neither",
-                          "scenario.toml:26: key 'thinning[4].note': unknown key (known keys here: age, ids, method, "
-                          "protect_habitat_trees, reason, target_basal_area_m2_per_ha, target_stems_per_ha)",
+                          "target_stems_per_ha, target_basal_area_m2_per_ha, remove_fraction and "
+                          "remove_basal_area_fraction, got none",
+                          "scenario.toml:26: key 'thinning[4].note': unknown key (known keys here: age, "
+                          "competitor_radius_m, competitors_per_crop_tree, crop_tree_spacing_m, crop_trees_per_ha, "
+                          "dbh_max_cm, dbh_min_cm, first_row, ids, method, protect_habitat_trees, reason, "
+                          "remove_basal_area_fraction, remove_fraction, repeat, repeat_every_years, row_azimuth_deg, "
+                          "row_interval, row_tolerance_m, target_basal_area_m2_per_ha, target_stems_per_ha, "
+                          "when_basal_area_exceeds_m2_per_ha, when_top_height_reaches_m)",
                           "scenario.toml:21: key 'thinning[4]': method \"from_above\" needs exactly one of "
-                          "target_stems_per_ha and target_basal_area_m2_per_ha, got both",
+                          "target_stems_per_ha, target_basal_area_m2_per_ha, remove_fraction and "
+                          "remove_basal_area_fraction, got target_stems_per_ha and target_basal_area_m2_per_ha",
                           "scenario.toml:30: key 'thinning[5].ids[2]': expected a tree id (string or integer), got a "
                           "floating-point number"));
 }

@@ -1,0 +1,14 @@
+#include "scenario/scenario_tables.hpp"
+#include "scenario/toml_table_reader.hpp"
+
+namespace heliostand::scenario_detail {
+
+void parse_competition(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
+  const toml::table* table = as_table(node, "competition", problems);
+  if (!table) return;
+  TomlTableReader reader(*table, "competition", problems);
+  if (auto radius = reader.number("hegyi_radius_m", positive())) draft.scenario.competition.hegyi_radius_m = *radius;
+  reader.report_unknown_keys();
+}
+
+}  // namespace heliostand::scenario_detail

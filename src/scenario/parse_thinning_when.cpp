@@ -1,0 +1,73 @@
+// When a [[thinning]] happens: `age`, or a condition of the living stand (`when_basal_area_exceeds_m2_per_ha`,
+// `when_top_height_reaches_m`), exactly one of them; `repeat` / `repeat_every_years` make it fire again
+// (stand/thinning_trigger.hpp).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "scenario/scenario_tables.hpp"
+
+namespace heliostand::scenario_detail {
+
+namespace {
+
+// `repeat = true` without an interval: five years, a common thinning cycle in young conifer plantations, and long
+// enough for the stand to answer one thinning before the next.
+constexpr int default_repeat_interval_years = 5;
+
+constexpr std::array<std::string_view, 3> when_keys{"age", "when_basal_area_exceeds_m2_per_ha",
+                                                    "when_top_height_reaches_m"};
+
+void check_age(TomlTableReader& reader, const ScenarioDraft& draft, int age) {
+  if (!draft.age_valid) return;
+  const int survey_age = draft.scenario.stand.age_at_survey_years;
+  if (age < survey_age) {
+    reader.problem("age", fmt::format("thinning at age {} is before the survey (stand age {})", age, survey_age));
+  } else if (draft.years_valid && age > survey_age + draft.scenario.run.years) {
+    reader.problem("age", fmt::format("thinning at age {} is after the end of the run (stand age {})", age,
+                                      survey_age + draft.scenario.run.years));
+  }
+}
+
+void read_repetition(TomlTableReader& reader, ThinningEvent& event) {
+  const auto repeat = reader.boolean("repeat");
+  const auto every = reader.integer("repeat_every_years", at_least(1));
+  if (repeat == false && reader.table().contains("repeat_every_years")) {
+    reader.problem("repeat_every_years", "not used with repeat = false (remove one of the two)");
+  } else if (every) {
+    event.repeat_every_years = static_cast<int>(*every);
+  } else if (repeat == true) {
+    event.repeat_every_years = default_repeat_interval_years;
+  }
+}
+
+}  // namespace
+
+void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningEvent& event) {
+  std::vector<std::string_view> given;
+  for (auto key : when_keys)
+    if (reader.table().contains(key)) given.push_back(key);
+  if (given.empty())
+    reader.problems().add(reader.line(), reader.key_path("age"),
+                          "required key missing (or, instead of a fixed age, a condition: "
+                          "when_basal_area_exceeds_m2_per_ha or when_top_height_reaches_m)");
+
+  if (auto age = reader.integer("age", at_least(1))) {
+    event.age_years = static_cast<int>(*age);
+    check_age(reader, draft, event.age_years);
+  }
+  if (auto threshold = reader.number("when_basal_area_exceeds_m2_per_ha", positive()))
+    event.condition = StandCondition{StandCondition::Measure::basal_area_m2_per_ha, *threshold};
+  if (auto threshold = reader.number("when_top_height_reaches_m", positive()))
+    event.condition = StandCondition{StandCondition::Measure::top_height_m, *threshold};
+  if (given.size() > 1)
+    reader.problem(given[1], fmt::format("a thinning happens at an age or on one condition: give one of age, "
+                                         "when_basal_area_exceeds_m2_per_ha and when_top_height_reaches_m, got {}",
+                                         fmt::join(given, " and ")));
+  read_repetition(reader, event);
+}
+
+}  // namespace heliostand::scenario_detail
