@@ -12,3 +12,11 @@ add_test(NAME example.thinning_regimes.present
          COMMAND ${CMAKE_COMMAND} -E echo "${HELIOSTAND_THINNING_EXAMPLE_COUNT} thinning examples")
 set_tests_properties(example.thinning_regimes.present PROPERTIES LABELS "examples"
                      PASS_REGULAR_EXPRESSION "^[1-9][0-9]* thinning examples")
+
+# The regimes of the thinning walk-through (docs/user-guide.md "A thinning study"), the example stand under each.
+file(GLOB HELIOSTAND_WALKTHROUGH_REGIMES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/stands/sobetsu/regimes/*.toml)
+foreach(scenario IN LISTS HELIOSTAND_WALKTHROUGH_REGIMES)
+  get_filename_component(name ${scenario} NAME_WE)
+  add_test(NAME example.walkthrough.check.${name} COMMAND $<TARGET_FILE:heliostand> check ${scenario})
+  set_tests_properties(example.walkthrough.check.${name} PROPERTIES LABELS "examples")
+endforeach()
