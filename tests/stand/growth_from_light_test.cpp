@@ -13,6 +13,7 @@
 #include "scenario/scenario.hpp"
 #include "stand/establishment.hpp"
 #include "stand/mortality.hpp"
+#include "stand/production_sky.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
 
@@ -72,13 +73,7 @@ TEST(GrowthResponse, ShadedShootsAndLeadersGrowLessThanLitOnes) {
   EXPECT_LT(dark_branches, 0.3 * lit_branches);  // only this year's whorl flushes (from the leader)
 }
 
-LightParameters coarse_sky() {
-  LightParameters light;
-  light.sky_bands = 8;
-  light.sky_sectors = 16;
-  light.sky = LightParameters::Sky::standard_overcast;
-  return light;
-}
+LightParameters coarse_sky() { return testing::production_sky(8, 16); }
 
 StandTree planted(int id, glm::dvec3 position, int age) {
   ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, position, seed, id);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "light/reference_light_solver.hpp"
+#include "stand/production_sky.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
 
@@ -15,15 +16,7 @@ namespace {
 
 constexpr std::uint64_t seed = 5;
 
-// The sky a stand sees in production (standard overcast, ground albedo; parse_light's stand default), coarsely
-// divided to keep the tests quick.
-LightParameters coarse_sky() {
-  LightParameters light;
-  light.sky = LightParameters::Sky::standard_overcast;
-  light.sky_bands = 4;
-  light.sky_sectors = 8;
-  return light;
-}
+LightParameters coarse_sky() { return testing::production_sky(4, 8); }
 
 StandTree planted(int id, glm::dvec3 position, double site_asymptote_m, int age) {
   TreeCalibration calibration;

@@ -14,6 +14,7 @@
 #include "stand/crop_tree_thinning.hpp"
 #include "stand/size_thinning.hpp"
 #include "stand/snapshot.hpp"
+#include "stand/production_sky.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_metrics.hpp"
 #include "stand/stand_table_ledger.hpp"
@@ -214,13 +215,7 @@ TEST(ThinningRegimesInAStand, SnapshotsCarryTheHegyiIndexOfTheLivingTrees) {
   }
 }
 
-LightParameters coarse_sky() {
-  LightParameters light;
-  light.sky = LightParameters::Sky::standard_overcast;
-  light.sky_bands = 4;
-  light.sky_sectors = 8;
-  return light;
-}
+LightParameters coarse_sky() { return testing::production_sky(4, 8); }
 
 // Steps 1 to 5 of the simulated year (stand/stand_year.hpp, no roots): the stand as the thinning step finds it.
 void grow_until_thinning(Stand& stand, LightSolver& solver, int year) {
