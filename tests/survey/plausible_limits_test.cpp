@@ -18,11 +18,7 @@ using ::testing::HasSubstr;
 std::vector<std::string> problems_of(const std::string& text) {
   SurveyReadOptions options;
   options.stand_age_years = 35;
-  const auto file = write_test_file("limits.csv", text);
-  auto lines = input_problems([&] { read_survey(file, options); });
-  for (auto& line : lines)
-    if (line.rfind(file.string(), 0) == 0) line = "s.csv" + line.substr(file.string().size());
-  return lines;
+  return testing::survey_problems("limits.csv", text, options);
 }
 
 TEST(PlausibleLimits, EachColumnsLimitIsAnErrorJustAboveIt) {

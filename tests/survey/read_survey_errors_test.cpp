@@ -19,14 +19,8 @@ SurveyReadOptions plot_30x30() {
   return options;
 }
 
-// The problems reading `text` as a survey gives, with the temporary file name replaced by "s.csv".
 std::vector<std::string> problems_of(const std::string& text, SurveyReadOptions options = plot_30x30()) {
-  const auto file = write_test_file("bad.csv", text);
-  auto lines = input_problems([&] { read_survey(file, options); });
-  for (auto& line : lines) {
-    if (line.rfind(file.string(), 0) == 0) line = "s.csv" + line.substr(file.string().size());
-  }
-  return lines;
+  return testing::survey_problems("bad.csv", text, options);
 }
 
 TEST(ReadSurveyErrors, UnreadableFile) {

@@ -28,11 +28,7 @@ Survey read_text(const std::string& text, SurveyReadOptions options = stand_of_a
 }
 
 std::vector<std::string> problems_of(const std::string& text, SurveyReadOptions options = stand_of_age()) {
-  const auto file = write_test_file("formats_bad.csv", text);
-  auto lines = input_problems([&] { read_survey(file, options); });
-  for (auto& line : lines)
-    if (line.rfind(file.string(), 0) == 0) line = "s.csv" + line.substr(file.string().size());
-  return lines;
+  return testing::survey_problems("formats_bad.csv", text, options);
 }
 
 bool any_warning_contains(const Survey& survey, const std::string& text) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/input_error.hpp"
+#include "survey/read_survey.hpp"
 
 namespace heliostand::testing {
 
@@ -30,6 +31,16 @@ std::vector<std::string> input_problems(Action&& action) {
   }
   ADD_FAILURE() << "expected an InputError";
   return {};
+}
+
+// The problems of reading `text` as the survey file `name` with `options`, the temporary path shown as "s.csv".
+inline std::vector<std::string> survey_problems(const std::string& name, const std::string& text,
+                                                const SurveyReadOptions& options) {
+  const auto file = write_test_file(name, text);
+  auto lines = input_problems([&] { read_survey(file, options); });
+  for (auto& line : lines)
+    if (line.rfind(file.string(), 0) == 0) line = "s.csv" + line.substr(file.string().size());
+  return lines;
 }
 
 }  // namespace heliostand::testing
