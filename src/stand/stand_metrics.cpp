@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "stand/thinning.hpp"  // basal_area_m2
+#include "geometry/angles.hpp"  // pi
 
 namespace heliostand {
 namespace {
@@ -18,6 +18,11 @@ void require_positive_area(double plot_area_ha) {
 }
 
 }  // namespace
+
+double basal_area_m2(double dbh_cm) {
+  const double radius_m = dbh_cm / 200.0;
+  return pi * radius_m * radius_m;
+}
 
 int top_height_tree_count(double plot_area_ha) {
   require_positive_area(plot_area_ha);

@@ -6,6 +6,9 @@
 
 namespace heliostand {
 
+// Basal area of one stem, m²: its cross-section at breast height, π (d/200)², DBH in cm.
+double basal_area_m2(double dbh_cm);
+
 // What a stand metric needs from one tree.
 struct TreeMeasurement {
   double dbh_cm = 0;

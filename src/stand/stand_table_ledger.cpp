@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "stand/thinning.hpp"  // basal_area_m2
 
 namespace heliostand {
 namespace {

@@ -1,17 +1,11 @@
 #include "stand/thinning.hpp"
 
-#include "geometry/angles.hpp"
 #include "stand/crop_tree_thinning.hpp"
 #include "stand/dbh_class_thinning.hpp"
 #include "stand/row_thinning.hpp"
 #include "stand/size_thinning.hpp"
 
 namespace heliostand {
-
-double basal_area_m2(double dbh_cm) {
-  const double radius_m = dbh_cm / 200.0;
-  return pi * radius_m * radius_m;
-}
 
 namespace {
 

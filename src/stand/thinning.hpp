@@ -15,6 +15,7 @@
 
 #include "scenario/thinning_event.hpp"  // ThinningMethod and the regimes' settings
 #include "geometry/neighbourhood.hpp"     // StandEdges
+#include "stand/stand_metrics.hpp"       // basal_area_m2, which the targets are stated in
 
 namespace heliostand {
 
@@ -55,7 +56,5 @@ std::vector<std::size_t> select_for_thinning(const ThinningRule& rule, const std
 // The same on a plot whose edges do not matter to the rule (every rule but crop_tree).
 std::vector<std::size_t> select_for_thinning(const ThinningRule& rule, const std::vector<ThinningCandidate>& living,
                                              double plot_area_ha);
-
-double basal_area_m2(double dbh_cm);  // cross-section at breast height, π (d/200)²
 
 }  // namespace heliostand
