@@ -2,13 +2,12 @@
 
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
+#include "survey/plausible_limits.hpp"
 #include "survey/read_survey.hpp"
 
 namespace heliostand::scenario_detail {
 
 namespace {
-// Coordinates in metres beyond this are not a plot on Earth (survey/plausible_limits.hpp, the UTM range).
-constexpr double max_coordinate_m = 1e7;
 
 // stand.survey_units = { dbh = "mm", height = "ft" }: a unit per survey column, by its canonical name.
 void parse_survey_units(const toml::node* node, SurveyFormat& format, ScenarioProblems& problems) {
@@ -123,7 +122,7 @@ void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
       }
     }
   }
-  if (auto age = reader.integer("age_at_survey", between(1, 5000), true)) {
+  if (auto age = reader.integer("age_at_survey", between(1, max_tree_age_years), true)) {
     stand.age_at_survey_years = static_cast<int>(*age);
     draft.age_valid = true;
   }

@@ -6,7 +6,7 @@ std::optional<PlausibleLimit> plausible_limit(SurveyColumn column) {
   using C = SurveyColumn;
   switch (column) {
     case C::x:
-    case C::y: return PlausibleLimit{1e7, "coordinates in metres stay below 10,000 km, the range of UTM northings"};
+    case C::y: return PlausibleLimit{max_coordinate_m, "coordinates in metres stay below 10,000 km, the range of UTM northings"};
     case C::height:
     case C::crown_base: return PlausibleLimit{130.0, "the tallest measured tree, a coast redwood, is 116 m"};
     case C::dbh: return PlausibleLimit{1500.0, "the thickest measured stems are about 11-12 m across"};
@@ -14,7 +14,7 @@ std::optional<PlausibleLimit> plausible_limit(SurveyColumn column) {
       return PlausibleLimit{30.0, "the widest measured crowns are about 60 m across; a crown ratio is named "
                                   "crown_ratio"};
     case C::crown_diameter: return PlausibleLimit{60.0, "the widest measured crowns are about 60 m across"};
-    case C::age: return PlausibleLimit{5000.0, "the oldest known non-clonal tree is about 4,850 years old"};
+    case C::age: return PlausibleLimit{max_tree_age_years, "the oldest known non-clonal tree is about 4,850 years old"};
     case C::crown_ratio:
       return PlausibleLimit{1.0, "a crown ratio is a fraction of the height; name a percent column crown_ratio_pct "
                                  "or set stand.survey_units"};

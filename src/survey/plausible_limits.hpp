@@ -10,6 +10,10 @@
 
 namespace heliostand {
 
+// Limits the scenario shares with the survey: a plot's corners and the stand age at the survey.
+constexpr double max_coordinate_m = 1e7;     // UTM northings stay below 10,000 km
+constexpr double max_tree_age_years = 5000;  // the oldest known non-clonal tree is about 4,850 years old
+
 struct PlausibleLimit {
   double max;             // in the column's canonical unit; values above are errors
   std::string_view why;   // the fact behind the limit, quoted in the message
