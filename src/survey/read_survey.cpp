@@ -93,10 +93,11 @@ double column_unit_factor(const std::string& written, const NamedColumn& named, 
   return 1.0;
 }
 
-ColumnLayout read_header(const CsvRecord& header, const std::string& file, const SurveyFormat& format,
+ColumnLayout read_header(const CsvRecord& header, char separator, const std::string& file, const SurveyFormat& format,
                          std::vector<InputProblem>& problems, std::vector<std::string>& warnings) {
   ColumnLayout layout;
   layout.field_count = header.fields.size();
+  layout.decimal_comma = separator != ',';
   for (std::size_t i = 0; i < header.fields.size(); ++i) {
     const std::string written(trim_blanks(header.fields[i]));
     const auto named = survey_column_named(written);
@@ -515,20 +516,24 @@ void resolve_shared_positions(std::vector<SurveyRecord>& trees, MultiStemPolicy 
                                  file, stems, groups.size(), groups.size()));
 }
 
-CsvTable read_table(const std::filesystem::path& file, const std::string& label, const SurveyFormat& format,
-                    bool& decimal_comma) {
+// The survey's records, split at the separator the scenario names or the header line shows.
+struct SurveyTable {
+  CsvTable csv;
+  char separator = ',';
+};
+
+SurveyTable read_table(const std::filesystem::path& file, const std::string& label, const SurveyFormat& format) {
   const std::string text = read_whole_file(file, label);
   const char separator = separator_char(format.separator, text);
-  decimal_comma = separator != ',';
-  return parse_csv(text, label, separator);
+  return {parse_csv(text, label, separator), separator};
 }
 
 }  // namespace
 
 Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& options) {
   const std::string label = file.string();
-  bool decimal_comma = false;
-  CsvTable table = read_table(file, label, options.format, decimal_comma);
+  SurveyTable read = read_table(file, label, options.format);
+  CsvTable& table = read.csv;
   std::vector<InputProblem> problems = std::move(table.problems);
   Survey survey;
   survey.file = file;
@@ -537,8 +542,8 @@ Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& o
     problems.push_back({label, 0, "", "the survey is empty (expected a header row and one row per tree)"});
     throw InputError(std::move(problems));
   }
-  ColumnLayout layout = read_header(table.records.front(), label, options.format, problems, survey.warnings);
-  layout.decimal_comma = decimal_comma;
+  const ColumnLayout layout =
+      read_header(table.records.front(), read.separator, label, options.format, problems, survey.warnings);
   if (!problems.empty()) throw InputError(std::move(problems));
   if (table.records.size() == 1) {
     problems.push_back({label, table.records.front().line, "", "no tree records after the header"});
@@ -567,14 +572,13 @@ Survey read_survey(const std::filesystem::path& file, const SurveyReadOptions& o
 std::optional<PlotBounds> survey_extent(const std::filesystem::path& file, const SurveyFormat& format) {
   try {
     const std::string label = file.string();
-    bool decimal_comma = false;
-    const CsvTable table = read_table(file, label, format, decimal_comma);
+    const SurveyTable read = read_table(file, label, format);
+    const CsvTable& table = read.csv;
     if (table.records.size() < 2) return std::nullopt;
     std::vector<InputProblem> problems;
     std::vector<std::string> warnings;
-    ColumnLayout layout = read_header(table.records.front(), label, format, problems, warnings);
+    const ColumnLayout layout = read_header(table.records.front(), read.separator, label, format, problems, warnings);
     if (!problems.empty()) return std::nullopt;
-    layout.decimal_comma = decimal_comma;
     std::optional<PlotBounds> extent;
     for (std::size_t i = 1; i < table.records.size(); ++i) {
       if (table.records[i].fields.size() != layout.field_count) continue;
