@@ -4,6 +4,8 @@
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
 // Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
+#include "voxel_grid.clh"
+
 #define PATCH_COUNT (SKY_BANDS * SKY_SECTORS)
 #define PI_F 3.14159265358979f
 #define BAND_WIDTH (PI_F / SKY_BANDS)
@@ -11,6 +13,8 @@
 // The window of candidate patches is widened by this angle (rad), far above float round-off, so that the
 // exact ray test below, not the window, decides every hit.
 #define WINDOW_MARGIN 1e-3f
+#define WINDOW_MARGIN_COS 0.9999995f  // cos(WINDOW_MARGIN)
+#define WINDOW_MARGIN_SIN 9.9999983e-4f  // sin(WINDOW_MARGIN)
 #define BALANCED_LIGHT_FRACTION 1e-5f
 
 // The ray test of the reference solver: half-line from the receiver along n vs a ball at offset d, radius r.
@@ -20,17 +24,40 @@ inline bool ray_hits(float3 d, float r, float3 n) {
   return dot(c, c) <= r * r;
 }
 
+// Inverse trigonometry for the patch window only. Polynomials of Abramowitz & Stegun (1964), 4.4.45 (acos,
+// |error| <= 6.8e-5 rad in float) and 4.4.49 (atan on [0, 1], |error| <= 1.2e-5 rad): more than ten times
+// under WINDOW_MARGIN, so the window still holds every patch the ball can hit and the exact ray test below
+// decides; they cost a few multiply-adds where the library functions cost tens of instructions each.
+inline float acos_window(float x) {
+  const float a = fabs(x);
+  const float r = sqrt(max(0.0f, 1.0f - a)) * (1.5707288f + a * (-0.2121144f + a * (0.0742610f - 0.0187293f * a)));
+  return x < 0.0f ? PI_F - r : r;
+}
+inline float asin_window(float x) { return 0.5f * PI_F - acos_window(x); }
+inline float atan2_window(float y, float x) {  // in (-pi, pi], like atan2
+  const float ax = fabs(x), ay = fabs(y);
+  const float hi = max(ax, ay);
+  const float z = hi > 0.0f ? min(ax, ay) / hi : 0.0f;
+  const float z2 = z * z;
+  float a = z * (0.9998660f + z2 * (-0.3302995f + z2 * (0.1801410f + z2 * (-0.0851330f + z2 * 0.0208351f))));
+  if (ay > ax) a = 0.5f * PI_F - a;
+  if (x < 0.0f) a = PI_F - a;
+  return y < 0.0f ? -a : a;
+}
+
 // Adds log(t) to every patch whose centre ray hits the ball at offset d. Only the patches whose centre can
-// lie in the ball's angular disc (half-angle asin(r/|d|)) are tested, so the cost per ball is O(1) + hits.
+// lie in the ball's angular disc (half-angle asin(r/|d|)) are tested (seed 000 "scan-converts" each ball onto
+// the receiver's sky the same way), so the cost per ball is O(1) + the patches it covers.
 inline void shade_by_ball(float* log_b, __global const float4* patches, float3 d, float r, float log_t) {
   const float dist2 = dot(d, d);
   if (dist2 <= r * r) {  // the receiver sits inside this ball: shaded in every direction
     for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
     return;
   }
-  const float dist = sqrt(dist2);
-  const float half_angle = asin(r / dist) + WINDOW_MARGIN;
-  const float polar = acos(clamp(d.z / dist, -1.0f, 1.0f));
+  const float inverse_dist = rsqrt(dist2);
+  const float sin_disc = r * inverse_dist;  // sine of the disc's half-angle
+  const float half_angle = asin_window(sin_disc) + WINDOW_MARGIN;
+  const float polar = acos_window(clamp(d.z * inverse_dist, -1.0f, 1.0f));
   // bands whose centre polar angle (v + 0.5) * BAND_WIDTH lies within the disc's polar range
   const int v_lo = max(0, (int)ceil((polar - half_angle) / BAND_WIDTH - 0.5f));
   const int v_hi = min(SKY_BANDS - 1, (int)floor((polar + half_angle) / BAND_WIDTH - 0.5f));
@@ -39,17 +66,20 @@ inline void shade_by_ball(float* log_b, __global const float4* patches, float3 d
   const float horizontal = sqrt(d.x * d.x + d.y * d.y);
   const bool holds_pole = polar - half_angle <= 0.0f || polar + half_angle >= PI_F;
   if (!holds_pole) {
-    // a disc clear of the poles spans at most asin(sin(half angle) / sin(polar)) in azimuth
-    const float spread = asin(min(1.0f, sin(half_angle) * dist / horizontal)) + WINDOW_MARGIN;
-    float azimuth = atan2(d.y, d.x);
+    // a disc clear of the poles spans at most asin(sin(half angle) / sin(polar)) in azimuth;
+    // sin(asin(sin_disc) + margin) by the angle-sum rule
+    const float sin_half = sin_disc * WINDOW_MARGIN_COS + sqrt(max(0.0f, 1.0f - sin_disc * sin_disc)) * WINDOW_MARGIN_SIN;
+    const float spread = asin_window(min(1.0f, sin_half / (horizontal * inverse_dist))) + WINDOW_MARGIN;
+    float azimuth = atan2_window(d.y, d.x);
     if (azimuth < 0.0f) azimuth += 2.0f * PI_F;
     h_lo = (int)ceil((azimuth - spread) / SECTOR_WIDTH - 0.5f);
     h_hi = (int)floor((azimuth + spread) / SECTOR_WIDTH - 0.5f);
     if (h_hi - h_lo >= SKY_SECTORS) { h_lo = 0; h_hi = SKY_SECTORS - 1; }
   }
+  // h_lo >= -SKY_SECTORS and h_hi < 2 SKY_SECTORS: one add or subtract wraps a sector (no integer division)
   for (int v = v_lo; v <= v_hi; ++v)
     for (int h = h_lo; h <= h_hi; ++h) {
-      const int sector = (h % SKY_SECTORS + SKY_SECTORS) % SKY_SECTORS;
+      const int sector = h < 0 ? h + SKY_SECTORS : (h >= SKY_SECTORS ? h - SKY_SECTORS : h);
       const int p = v * SKY_SECTORS + sector;
       if (ray_hits(d, r, patches[p].xyz)) log_b[p] += log_t;
     }
@@ -97,36 +127,32 @@ __kernel void light_exact(__global const float4* balls, const int ball_count,
   out[slot] = light_sample(log_b, patches, b0);
 }
 
-// Trilinear interpolation of cell-centre values (layout [z][y][x]); same rules as VoxelGrid::sample.
-inline float grid_sample(__global const float* values, float3 p, float3 origin, float3 cell, int4 dims,
-                         int periodic) {
-  const float3 far_corner = origin + convert_float3(dims.xyz) * cell;
-  if (p.z < origin.z || p.z > far_corner.z) return 0.0f;
-  if (!periodic && (p.x < origin.x || p.x > far_corner.x || p.y < origin.y || p.y > far_corner.y)) return 0.0f;
-  const float3 u = (p - origin) / cell - 0.5f;
-  const float3 base = floor(u);
-  const float3 f = u - base;
-  int3 lo = convert_int3(base), hi = lo + 1;
-  if (periodic) {
-    lo.x = (lo.x % dims.x + dims.x) % dims.x; hi.x = (hi.x % dims.x + dims.x) % dims.x;
-    lo.y = (lo.y % dims.y + dims.y) % dims.y; hi.y = (hi.y % dims.y + dims.y) % dims.y;
-  } else {
-    lo.x = clamp(lo.x, 0, dims.x - 1); hi.x = clamp(hi.x, 0, dims.x - 1);
-    lo.y = clamp(lo.y, 0, dims.y - 1); hi.y = clamp(hi.y, 0, dims.y - 1);
+// Each group alone (the open-grown light of every tree at once): ball i is shaded by the other balls of its own
+// group, balls[group_start[g] .. group_start[g + 1]), in the order light_exact visits them. Coordinates are
+// relative to each group's own origin, as when the group is solved as a stand by itself.
+__kernel void light_each_alone(__global const float4* balls, __global const int* ball_group,
+                               __global const int* group_start, const int ball_count,
+                               __global const float4* patches, __global const float* b0, const float log_t,
+                               __global float4* out) {
+  const int i = get_global_id(0);
+  if (i >= ball_count) return;
+  const int g = ball_group[i];
+  const float3 centre = balls[i].xyz;
+  float log_b[PATCH_COUNT];
+  for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] = 0.0f;
+  for (int j = group_start[g]; j < group_start[g + 1]; ++j) {
+    if (j == i) continue;
+    const float4 ball = balls[j];
+    shade_by_ball(log_b, patches, ball.xyz - centre, ball.w, log_t);
   }
-  lo.z = clamp(lo.z, 0, dims.z - 1); hi.z = clamp(hi.z, 0, dims.z - 1);
-#define V(ix, iy, iz) values[((iz) * dims.y + (iy)) * dims.x + (ix)]
-  const float c00 = mix(V(lo.x, lo.y, lo.z), V(hi.x, lo.y, lo.z), f.x);
-  const float c10 = mix(V(lo.x, hi.y, lo.z), V(hi.x, hi.y, lo.z), f.x);
-  const float c01 = mix(V(lo.x, lo.y, hi.z), V(hi.x, lo.y, hi.z), f.x);
-  const float c11 = mix(V(lo.x, hi.y, hi.z), V(hi.x, hi.y, hi.z), f.x);
-#undef V
-  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+  out[i] = light_sample(log_b, patches, b0);
 }
 
-// Culled: the near-field candidates of each receiver (CSR), then the far-field optical depth from the
-// cut-off outward (table [patch][cell]), attenuating by exp(-(1 - t) tau).
-__kernel void light_culled(__global const float4* balls, __global const int* receivers, const int receiver_count,
+// Culled: receivers come in tile order; each reads its tile's candidate list (CSR), keeps the occluders whose
+// centre lies within the cut-off of its own (the reference solver's test, in float), then adds the far-field
+// optical depth from the cut-off outward (table [patch][cell]), attenuating by exp(-(1 - t) tau).
+__kernel void light_culled(__global const float4* balls, __global const int* receivers,
+                           __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
                            __global const float4* patches, __global const float* b0, const float log_t,
                            __global const float* far_depth, const float4 grid_origin, const float4 grid_cell,
@@ -134,12 +160,18 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
                            __global float4* out) {
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
-  const float3 centre = balls[receivers[slot]].xyz;
+  const int self = receivers[slot];
+  const int tile = receiver_tiles[slot];
+  const float3 centre = balls[self].xyz;
+  const float cutoff2 = cutoff * cutoff;
   float log_b[PATCH_COUNT];
   for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] = 0.0f;
-  for (int k = candidate_start[slot]; k < candidate_start[slot + 1]; ++k) {
-    const float4 ball = balls[candidates[k]];
-    shade_by_ball(log_b, patches, ball.xyz - centre, ball.w, log_t);
+  for (int k = candidate_start[tile]; k < candidate_start[tile + 1]; ++k) {
+    const int j = candidates[k];
+    const float4 ball = balls[j];
+    const float3 d = ball.xyz - centre;
+    if (j == self || dot(d, d) > cutoff2) continue;
+    shade_by_ball(log_b, patches, d, ball.w, log_t);
   }
   const int cells = grid_dims.x * grid_dims.y * grid_dims.z;
   for (int p = 0; p < PATCH_COUNT; ++p) {

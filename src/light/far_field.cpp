@@ -70,7 +70,8 @@ bool VoxelGrid::outside(const glm::dvec3& point) const {
   return point.x < origin.x || point.x > far_corner.x || point.y < origin.y || point.y > far_corner.y;
 }
 
-FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const CelestialSphere& sky)
+FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const CelestialSphere& sky,
+                   bool with_table)
     : grid_(grid_around(occluders, p, sky.patches().size())), transmittance_(p.transmittance) {
   // Longest useful path: horizontal rays in a periodic stand would circle the torus forever.
   max_path_m_ = 4.0 * glm::length(glm::dvec3(grid_.dims) * grid_.cell) + 1.0;
@@ -99,6 +100,7 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
       density_[grid_.index(at[0], at[1], at[2])] += weight;
     }
   }
+  if (!with_table) return;
   // The optical-depth table: patches are independent, so split them over the cores.
   const auto& patches = sky.patches();
   depth_.assign(patches.size() * grid_.cell_count(), 0.0f);
@@ -139,15 +141,19 @@ void FarField::sweep(const glm::dvec3& direction, std::span<double> depth) const
       }
 }
 
+double FarField::saturated_hits() const {
+  return saturated_attenuation / std::max(1e-6, 1.0 - transmittance_);
+}
+
 double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, double length) const {
   // midpoint rule, at least one sample per cell length: sigma is itself trilinear between cell centres
   const double cell = std::min({grid_.cell.x, grid_.cell.y, grid_.cell.z});
-  const double saturated_hits = saturated_attenuation / std::max(1e-6, 1.0 - transmittance_);
+  const double saturated = saturated_hits();
   length = std::min(length, max_path_m_);
   const int samples = static_cast<int>(std::ceil(length / cell - 1e-9));
   const double step = length / samples;
   double tau = 0;
-  for (int k = 0; k < samples && tau < saturated_hits; ++k) {
+  for (int k = 0; k < samples && tau < saturated; ++k) {
     const glm::dvec3 at = point + (k + 0.5) * step * direction;
     if (grid_.outside(at)) break;
     tau += grid_.sample(std::span<const double>(density_), at) * step;

@@ -37,7 +37,10 @@ struct VoxelGrid {
 
 class FarField {
  public:
-  FarField(const OccluderSet& occluders, const LightParameters& parameters, const CelestialSphere& sky);
+  // `with_table` = false computes the grid and the density only: the OpenCL solver sweeps the optical-depth
+  // table on its device (cl/far_field.cl) from the same density, so the table never exists on the host.
+  FarField(const OccluderSet& occluders, const LightParameters& parameters, const CelestialSphere& sky,
+           bool with_table = true);
 
   const VoxelGrid& grid() const { return grid_; }
   const std::vector<double>& density() const { return density_; }         // sigma per cell, 1/m
@@ -47,6 +50,10 @@ class FarField {
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
   // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
   double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
+  // Longest march (m): horizontal rays in a periodic stand would circle the torus forever.
+  double max_path_m() const { return max_path_m_; }
+  // Expected hits after which a patch counts as dark: the march stops there (see far_field.cpp).
+  double saturated_hits() const;
 
  private:
   void sweep(const glm::dvec3& direction, std::span<double> depth) const;

@@ -26,7 +26,10 @@ struct Run {
   bool estimated = false;       // time extrapolated from the subsample
   double seconds = 0;           // one evaluation of the whole stand (setup included)
   double setup_seconds = 0;
+  double search_seconds = 0;     // parts of setup_seconds: candidate search, far-field table
+  double far_field_seconds = 0;
   double mean_candidates = 0;
+  double mean_tile_candidates = 0;
   std::vector<LightSample> at_subsample;  // answers at the error-measurement balls
 };
 
@@ -75,7 +78,10 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
     run.seconds = stats.setup_seconds + (wall - stats.setup_seconds) * double(balls.size()) / subsample.size();
   }
   run.setup_seconds = solver.last_statistics().setup_seconds;
+  run.search_seconds = solver.last_statistics().search_seconds;
+  run.far_field_seconds = solver.last_statistics().far_field_seconds;
   run.mean_candidates = solver.last_statistics().mean_candidates;
+  run.mean_tile_candidates = solver.last_statistics().mean_tile_candidates;
   spdlog::info("bench light: {} balls, {}: {:.3f} s{}", balls.size(), name, run.seconds,
                run.estimated ? " (estimated)" : "");
   return run;
@@ -83,8 +89,10 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
 
 std::string run_json(const Run& run, const Run& truth) {
   if (!run.ran) return "null";
-  std::string text = fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "estimated_from_subsample": {})",
-                                 run.seconds, run.setup_seconds, run.estimated ? "true" : "false");
+  std::string text = fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "search_seconds": {:.6g}, )"
+                                 R"("far_field_seconds": {:.6g}, "estimated_from_subsample": {})",
+                                 run.seconds, run.setup_seconds, run.search_seconds, run.far_field_seconds,
+                                 run.estimated ? "true" : "false");
   if (&run != &truth && truth.ran) {
     const Error e = error_against(truth.at_subsample, run.at_subsample);
     text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"
@@ -135,7 +143,7 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
   return fmt::format(
       R"(    {{"balls": {}, "trees": {}, "plot_m": {:.4g}, "opencl_device": "{}",)"
       "\n"
-      R"(     "build_seconds": {:.6g}, "mean_candidates": {:.6g},)"
+      R"(     "build_seconds": {:.6g}, "mean_candidates": {:.6g}, "mean_tile_candidates": {:.6g},)"
       "\n"
       R"(     "error_measured_on": {{"balls": {}, "whole_stand": {}}},)"
       "\n"
@@ -151,7 +159,7 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
       R"("opencl_culled_over_reference_exact": {}, "reference_culled_over_reference_exact": {}}}}})",
       balls.size(), canopy.tree_count, canopy.plot_size_m, device,
       opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds,
-      opencl_culled.ran ? opencl_culled.mean_candidates : reference_culled.mean_candidates,
+      reference_culled.mean_candidates, reference_culled.mean_tile_candidates,
       whole ? balls.size() : subsample.size(), whole ? "true" : "false",
       run_json(reference_exact, reference_exact), run_json(reference_culled, reference_exact),
       run_json(opencl_exact, reference_exact), run_json(opencl_culled, reference_exact),

@@ -26,7 +26,11 @@ struct LightSample {
 struct LightSolveStatistics {
   double setup_seconds = 0;       // k-d tree, candidate lists, far-field grid (culled mode); 0 in exact mode
   double evaluate_seconds = 0;    // the per-ball shading itself (incl. device transfers)
+  // Parts of setup_seconds (culled mode), to say where the time goes (docs/performance.md).
+  double search_seconds = 0;      // k-d tree and near-field candidate lists
+  double far_field_seconds = 0;   // far-field density and optical-depth table
   double mean_candidates = 0;     // near-field occluders per ball (culled) or all other balls (exact)
+  double mean_tile_candidates = 0;  // culled: length of the tile's candidate list each ball scans
 };
 
 class LightSolver {
@@ -39,11 +43,18 @@ class LightSolver {
   // Used to check or time a large stand on a subsample.
   virtual std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
                                              std::span<const std::uint32_t> receivers) = 0;
+  // Each group of balls lit as if it stood alone: group g is balls[group_start[g] .. group_start[g+1]), shaded by
+  // its own balls only (the open-grown light of every tree of a stand). group_start runs from 0 to balls.size().
+  // Solved group by group here; the OpenCL solver lights all groups in one launch.
+  virtual std::vector<LightSample> solve_each_alone(std::span<const LeafBall> balls,
+                                                    std::span<const std::size_t> group_start);
   const LightSolveStatistics& last_statistics() const { return statistics_; }
 
  protected:
   // Throws std::out_of_range when a receiver index is not a ball of `balls`.
   static void check_receivers(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers);
+  // Throws std::invalid_argument unless group_start rises from 0 to balls.size().
+  static void check_groups(std::span<const LeafBall> balls, std::span<const std::size_t> group_start);
   LightSolveStatistics statistics_;
 };
 

@@ -1,7 +1,11 @@
 #pragma once
 // Candidate culling: a k-d tree (FLANN KDTreeSingleIndex, deterministic) over occluder centres, rebuilt
-// every solve; a radius search gives each receiver the occluders whose centre lies within the cut-off.
-// The result is CSR arrays (start offsets + occluder indices), the layout the OpenCL kernel reads.
+// every solve. Receivers are grouped into cubic tiles and one radius search per tile, from the tile's centre
+// out to the cut-off plus the tile's half-diagonal, finds every occluder that can lie within the cut-off of
+// any receiver in it; each receiver then keeps those within the cut-off of its own centre. A tile's
+// receivers share one list (a few dozen balls read one list instead of each writing ~600 indices of its own),
+// which is what makes the search and its memory small for a stand of a million balls.
+// The result is CSR arrays, the layout the OpenCL kernel reads.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -11,10 +15,21 @@
 
 namespace heliostand {
 
-struct CandidateLists {
-  std::vector<std::uint32_t> start;     // receiver slot r has occluders[start[r] .. start[r+1])
-  std::vector<std::uint32_t> occluders; // indices into the OccluderSet (never the receiver itself)
+struct TileCandidates {
+  // Receiver slots (positions in the receiver list) ordered by tile: tile t holds
+  // slots[slot_start[t] .. slot_start[t+1]).
+  std::vector<std::uint32_t> slots;
+  std::vector<std::uint32_t> slot_start;
+  // Occluders (indices into the OccluderSet) whose centre lies within cut-off + half-diagonal of tile t's
+  // centre: occluders[start[t] .. start[t+1]). A receiver itself is among its tile's occluders: skip it.
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> occluders;
+  std::size_t tile_count() const { return slot_start.empty() ? 0 : slot_start.size() - 1; }
 };
+
+// Tile edge for a cut-off: three quarters of the cut-off balances fewer searches (bigger tiles) against more occluders to
+// discard by distance in each receiver's loop (measured in docs/performance.md).
+inline double tile_edge_for(double cutoff_m) { return 0.75 * cutoff_m; }
 
 class NearFieldSearch {
  public:
@@ -23,9 +38,13 @@ class NearFieldSearch {
   NearFieldSearch(const NearFieldSearch&) = delete;
   NearFieldSearch& operator=(const NearFieldSearch&) = delete;
 
-  // Near-field occluders of each receiver (receivers index the stand's balls, i.e. the first
-  // ball_count entries of the OccluderSet).
-  CandidateLists candidates(std::span<const std::uint32_t> receivers) const;
+  // Near-field candidates of the receivers (indices of the stand's balls, i.e. the first ball_count entries of
+  // the OccluderSet), grouped into tiles of edge `tile_m`.
+  TileCandidates tile_candidates(std::span<const std::uint32_t> receivers, double tile_m) const;
+
+  // True when occluder `j` shades receiver ball `i` in the near field: another entry whose centre lies within
+  // the cut-off (double precision; the OpenCL kernel makes the same test in float).
+  bool within_cutoff(std::uint32_t i, std::uint32_t j) const;
 
  private:
   struct Index;

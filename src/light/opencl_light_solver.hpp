@@ -17,6 +17,9 @@ class OpenCLLightSolver final : public LightSolver {
   std::string name() const override;
   std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
                                      std::span<const std::uint32_t> receivers) override;
+  // Exact, open plots: every group in one launch (cl/light.cl light_each_alone); otherwise group by group.
+  std::vector<LightSample> solve_each_alone(std::span<const LeafBall> balls,
+                                            std::span<const std::size_t> group_start) override;
 
  private:
   struct Device;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <span>
 
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
@@ -29,6 +30,26 @@ void for_each_exact_occluder(const OccluderSet& set, const PlotTorus& torus, std
         if (j == receiver && sx == 0 && sy == 0) continue;
         visit(set.centres[j] + glm::dvec3(sx * torus.size.x, sy * torus.size.y, 0.0), set.radii[j]);
       }
+}
+
+// Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field beyond the cut-off.
+LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t> occluders,
+                          const std::optional<FarField>& far, const glm::dvec3& centre, const CelestialSphere& sky,
+                          const PlotTorus& torus, double t, double cutoff_m) {
+  std::vector<double> intensity;
+  intensity.reserve(sky.patches().size());
+  for (std::size_t q = 0; q < sky.patches().size(); ++q) {
+    const auto& patch = sky.patches()[q];
+    double b = patch.initial_intensity;
+    for (auto j : occluders)
+      if (ray_hits_ball(centre, patch.direction, set.centres[j], set.radii[j])) b *= t;
+    if (far) {
+      const glm::dvec3 beyond_cutoff = torus.wrap(centre + cutoff_m * patch.direction);
+      b *= std::exp(-(1.0 - t) * far->optical_depth(beyond_cutoff, static_cast<int>(q)));
+    }
+    intensity.push_back(b);
+  }
+  return light_sample(sky, intensity);
 }
 
 }  // namespace
@@ -69,31 +90,31 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   auto start = Clock::now();
   const OccluderSet set = make_occluder_set(balls, torus, parameters_.cutoff_m);
   const NearFieldSearch search(set, parameters_.cutoff_m);
-  const CandidateLists near = search.candidates(receivers);
+  const TileCandidates near = search.tile_candidates(receivers, tile_edge_for(parameters_.cutoff_m));
+  statistics_.search_seconds = seconds_since(start);
+  const auto far_start = Clock::now();
   const std::optional<FarField> far =
       parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky) : std::nullopt;
+  statistics_.far_field_seconds = seconds_since(far_start);
   statistics_.setup_seconds = seconds_since(start);
-  statistics_.mean_candidates = receivers.empty() ? 0.0 : double(near.occluders.size()) / receivers.size();
 
   start = Clock::now();
-  for (std::size_t slot = 0; slot < receivers.size(); ++slot) {
-    const glm::dvec3 centre = set.centres[receivers[slot]];
-    std::vector<double> intensity;
-    for (std::size_t q = 0; q < sky.patches().size(); ++q) {
-      const auto& patch = sky.patches()[q];
-      double b = patch.initial_intensity;
-      for (auto k = near.start[slot]; k < near.start[slot + 1]; ++k) {
-        const auto j = near.occluders[k];
-        if (ray_hits_ball(centre, patch.direction, set.centres[j], set.radii[j])) b *= t;
-      }
-      if (far) {
-        const glm::dvec3 beyond_cutoff = torus.wrap(centre + parameters_.cutoff_m * patch.direction);
-        b *= std::exp(-(1.0 - t) * far->optical_depth(beyond_cutoff, static_cast<int>(q)));
-      }
-      intensity.push_back(b);
+  samples.resize(receivers.size());
+  std::size_t candidate_total = 0, scanned_total = 0;
+  std::vector<std::uint32_t> occluders;
+  for (std::size_t tile = 0; tile < near.tile_count(); ++tile)
+    for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
+      const std::uint32_t slot = near.slots[k];
+      occluders.clear();
+      for (auto c = near.start[tile]; c < near.start[tile + 1]; ++c)
+        if (search.within_cutoff(receivers[slot], near.occluders[c])) occluders.push_back(near.occluders[c]);
+      candidate_total += occluders.size();
+      scanned_total += near.start[tile + 1] - near.start[tile];
+      samples[slot] = culled_sample(set, occluders, far, set.centres[receivers[slot]], sky, torus, t,
+                                     parameters_.cutoff_m);
     }
-    samples.push_back(light_sample(sky, intensity));
-  }
+  statistics_.mean_candidates = receivers.empty() ? 0.0 : double(candidate_total) / receivers.size();
+  statistics_.mean_tile_candidates = receivers.empty() ? 0.0 : double(scanned_total) / receivers.size();
   statistics_.evaluate_seconds = seconds_since(start);
   return samples;
 }

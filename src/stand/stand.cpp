@@ -44,10 +44,12 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
   first_ball[trees_.size()] = balls.size();
 
   const std::vector<LightSample> samples = stand_solver.solve(balls);
+  // The open-grown reference: every tree alone, all in one call (first_ball delimits each tree's balls).
+  const std::vector<LightSample> open_grown = open_solver.solve_each_alone(balls, first_ball);
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     StandTree& tree = trees_[i];
     if (!tree.alive()) continue;
-    const std::vector<LightSample> open = open_grown_light(tree.tree, open_solver);
+    const std::span<const LightSample> open(open_grown.data() + first_ball[i], first_ball[i + 1] - first_ball[i]);
     const std::vector<int> foliage = tree.tree.foliage_shoot_indices();
     std::vector<ConiferTree::FoliageLight> light(foliage.size());
     LightBudget budget;

@@ -199,6 +199,37 @@ TEST_P(LightSolverTest, PeriodicPlotShadesAcrossItsEdgesLikeExplicitCopies) {
   EXPECT_GT(periodic[0].vector.x, 0.0);  // light comes from the east, away from the shading neighbour
 }
 
+// The open-grown reference lights every tree of a stand alone in one call: the same answers as solving each
+// group as a stand of its own, and no group shades another (two groups share one place here).
+TEST_P(LightSolverTest, EachGroupAloneMatchesSolvingItByItself) {
+  const auto p = parameters();
+  const CelestialSphere sky(p);
+  const auto first = testing::random_stand(40, 4.0, 0.2, 0.5, 3, sky, false);
+  const auto second = testing::random_stand(30, 4.0, 0.2, 0.5, 4, sky, false);  // overlaps the first
+  const std::vector<LeafBall> lone{{{2, 2, 2}, 0.3}};
+  std::vector<LeafBall> balls = first;
+  balls.insert(balls.end(), second.begin(), second.end());
+  balls.insert(balls.end(), lone.begin(), lone.end());
+  const std::vector<std::size_t> groups{0, first.size(), first.size(), balls.size() - 1, balls.size()};  // one empty
+  auto solver = make_solver(backend(), p);
+  const auto together = solver->solve_each_alone(balls, groups);
+  ASSERT_EQ(together.size(), balls.size());
+  std::vector<LightSample> apart = solver->solve(first);
+  const auto second_alone = solver->solve(second);
+  const auto lone_alone = solver->solve(lone);
+  apart.insert(apart.end(), second_alone.begin(), second_alone.end());
+  apart.insert(apart.end(), lone_alone.begin(), lone_alone.end());
+  double lowest = 1;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    EXPECT_EQ(together[k].light, apart[k].light) << "ball " << k;
+    EXPECT_EQ(together[k].vector, apart[k].vector) << "ball " << k;
+    lowest = std::min(lowest, together[k].light);
+  }
+  EXPECT_LT(lowest, 0.7);                     // the groups are dense enough to shade themselves
+  EXPECT_NEAR(together.back().light, 1.0, 1e-6);  // the lone ball sits inside the other groups, unshaded
+  EXPECT_THROW(solver->solve_each_alone(balls, std::vector<std::size_t>{0, 5}), std::invalid_argument);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, LightSolverTest,
                          ::testing::Combine(::testing::Values(Backend::reference, Backend::opencl),
                                             ::testing::Values(Mode::exact, Mode::culled), ::testing::Bool()),

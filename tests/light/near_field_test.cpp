@@ -1,0 +1,82 @@
+// The tiled near-field search: every receiver lands in exactly one tile, and its tile's list holds every
+// occluder within the cut-off of the receiver (checked against a brute-force scan), so the per-receiver
+// distance test in both solvers sees the same set the per-ball search of earlier versions found.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include <glm/geometric.hpp>
+
+#include "light/near_field.hpp"
+#include "light/occluders.hpp"
+#include "rng/random_stream.hpp"
+
+namespace heliostand {
+namespace {
+
+std::vector<LeafBall> scattered_balls(std::size_t count, double size, std::uint64_t seed) {
+  RandomStream random(seed, {11});
+  std::vector<LeafBall> balls;
+  for (std::size_t k = 0; k < count; ++k)
+    balls.push_back({{random.uniform(0, size), random.uniform(0, size), random.uniform(0, 0.5 * size)}, 0.2});
+  return balls;
+}
+
+void expect_tiles_hold_every_near_occluder(const OccluderSet& set, std::span<const std::uint32_t> receivers,
+                                           double cutoff, double tile) {
+  const NearFieldSearch search(set, cutoff);
+  const TileCandidates near = search.tile_candidates(receivers, tile);
+  ASSERT_EQ(near.slot_start.back(), receivers.size());
+  std::vector<std::uint32_t> slots = near.slots;
+  std::sort(slots.begin(), slots.end());
+  std::vector<std::uint32_t> every(receivers.size());
+  std::iota(every.begin(), every.end(), 0u);
+  EXPECT_EQ(slots, every) << "each receiver slot in exactly one tile";
+  std::size_t near_pairs = 0;
+  for (std::size_t t = 0; t < near.tile_count(); ++t) {
+    const std::span<const std::uint32_t> list(near.occluders.data() + near.start[t], near.start[t + 1] - near.start[t]);
+    for (auto k = near.slot_start[t]; k < near.slot_start[t + 1]; ++k) {
+      const std::uint32_t receiver = receivers[near.slots[k]];
+      for (std::uint32_t j = 0; j < set.centres.size(); ++j) {
+        if (!search.within_cutoff(receiver, j)) continue;
+        ++near_pairs;
+        EXPECT_TRUE(std::binary_search(list.begin(), list.end(), j))
+            << "occluder " << j << " at " << glm::distance(set.centres[j], set.centres[receiver])
+            << " m of receiver " << receiver << " is missing from its tile's list";
+      }
+    }
+  }
+  EXPECT_GT(near_pairs, 10 * receivers.size());  // the scene really has a near field
+}
+
+TEST(NearFieldSearch, EveryTileListHoldsEveryOccluderWithinTheCutoffOfItsReceivers) {
+  const auto balls = scattered_balls(1500, 12.0, 1);
+  const OccluderSet set = make_occluder_set(balls, PlotTorus{}, 0.0);
+  std::vector<std::uint32_t> receivers(balls.size());
+  std::iota(receivers.begin(), receivers.end(), 0u);
+  for (double tile : {0.5, 1.5, 3.0}) expect_tiles_hold_every_near_occluder(set, receivers, 2.0, tile);
+}
+
+TEST(NearFieldSearch, PeriodicImagesAndASubsetOfReceiversAreFound) {
+  const auto balls = scattered_balls(800, 8.0, 2);
+  LightParameters p;
+  p.periodic = true;
+  p.plot_x_max = p.plot_y_max = 8.0;
+  const OccluderSet set = make_occluder_set(balls, PlotTorus::from(p), 2.0);
+  ASSERT_GT(set.centres.size(), balls.size());  // images across the edges exist
+  std::vector<std::uint32_t> receivers;
+  for (std::uint32_t k = 0; k < balls.size(); k += 7) receivers.push_back(k);
+  expect_tiles_hold_every_near_occluder(set, receivers, 2.0, tile_edge_for(2.0));
+}
+
+TEST(NearFieldSearch, NoOccludersGiveEmptyLists) {
+  const OccluderSet set = make_occluder_set({}, PlotTorus{}, 0.0);
+  const NearFieldSearch search(set, 4.0);
+  const TileCandidates near = search.tile_candidates({}, 3.0);
+  EXPECT_EQ(near.tile_count(), 0u);
+  EXPECT_TRUE(near.occluders.empty());
+}
+
+}  // namespace
+}  // namespace heliostand
