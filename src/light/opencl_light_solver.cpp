@@ -23,14 +23,20 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Each work item keeps V x H floats of private state; PoCL places a whole work-group's private arrays on
-// one thread's stack, so a large automatic local size overflows it (seen at 16k receivers). Small explicit
-// groups keep that at 64 x 2 KB.
-constexpr std::size_t group_size = 64;
+// Work-group size, per device. Each work item keeps V x H floats of private state; a CPU OpenCL (PoCL) places a
+// whole work-group's private arrays on one thread's stack, so a large automatic local size overflows it (seen
+// at 16k receivers): small explicit groups keep that at 64 x 2 KB. A GPU gets its preferred multiple (a warp
+// or wavefront): the private arrays spill to its cache either way, and small groups keep more of them resident.
+constexpr std::size_t cpu_group_size = 64;
+
+std::size_t group_size_for(const cl::Kernel& kernel, const cl::Device& device) {
+  const std::size_t most = kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
+  if (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) return std::min(cpu_group_size, most);
+  return std::min(kernel.getWorkGroupInfo<CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE>(device), most);
+}
 
 void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::Device& device, std::size_t items) {
-  const std::size_t local =
-      std::min<std::size_t>(group_size, kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device));
+  const std::size_t local = group_size_for(kernel, device);
   const std::size_t global = (items + local - 1) / local * local;  // the kernels ignore the extra items
   queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
 }
@@ -60,8 +66,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const 
   const std::size_t cells = far.grid().cell_count();
   cl::Buffer depth(context, CL_MEM_READ_WRITE, cells * patch_count * sizeof(float));
   const std::size_t columns = std::size_t(far.grid().dims.x) * far.grid().dims.y;
-  const std::size_t local =
-      std::min<std::size_t>(group_size, k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device));
+  const std::size_t local = group_size_for(k, device.device);
   int arg = 0;
   k.setArg(arg++, density_buffer);
   k.setArg(arg++, depth);
