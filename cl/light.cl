@@ -2,7 +2,8 @@
 // balls: (x, y, z, radius) relative to a stand origin chosen by the host (keeps float precision).
 // patches: (N(h,v), S(h,v)); b0: B0 per patch. Output per receiver: (light vector, light).
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
-// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H).
+// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), and BALANCED_LIGHT_FRACTION, made by the
+// host from light_sum.hpp's balanced_light_fraction (the one copy: both backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
 #define PATCH_COUNT (SKY_BANDS * SKY_SECTORS)
 #define PI_F 3.14159265358979f
@@ -11,7 +12,6 @@
 // The window of candidate patches is widened by this angle (rad), far above float round-off, so that the
 // exact ray test below, not the window, decides every hit.
 #define WINDOW_MARGIN 1e-3f
-#define BALANCED_LIGHT_FRACTION 1e-5f
 
 // The ray test of the reference solver: half-line from the receiver along n vs a ball at offset d, radius r.
 inline bool ray_hits(float3 d, float r, float3 n) {

@@ -12,6 +12,7 @@
 #include "compute/opencl_context.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
+#include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
 
@@ -65,7 +66,8 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
   device_->cl = device;
   const auto options = compute::KernelOptions()
                            .define("SKY_BANDS", parameters_.sky_bands)
-                           .define("SKY_SECTORS", parameters_.sky_sectors);
+                           .define("SKY_SECTORS", parameters_.sky_sectors)
+                           .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction);
   device_->program = compute::build_program(device_->cl, compute::kernel_source("light.cl"), options.text());
   device_->exact = cl::Kernel(device_->program, "light_exact");
   device_->culled = cl::Kernel(device_->program, "light_culled");

@@ -38,7 +38,7 @@ cl::Buffer read_only_buffer(const cl::Context& context, std::vector<T>& data) {
 OpenCLRootFieldSolver::OpenCLRootFieldSolver(const compute::OpenCLContext& device) : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.cl = device;
-  const auto options = compute::KernelOptions().flag("-cl-std=CL1.2");
+  const auto options = compute::KernelOptions().flag("-cl-std=CL1.2").define("TOUCHING_DISTANCE", touching_distance_m);
   s.program = compute::build_program(s.cl, compute::kernel_source("roots.cl"), options.text());
   s.kernel = cl::Kernel(s.program, "root_contact_field");
 }

@@ -42,7 +42,8 @@ struct RootFieldSample {
   glm::dvec3 moisture_pull{0.0};      // Vw before normalisation
 };
 
-// Segments nearer than this to the apex give no direction and are not counted.
+// Segments nearer than this to the apex give no direction and are not counted (cl/roots.cl gets this value as
+// the build option TOUCHING_DISTANCE).
 inline constexpr double touching_distance_m = 1e-5;
 
 class RootFieldSolver {

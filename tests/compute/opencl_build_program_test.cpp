@@ -1,5 +1,6 @@
 // Every kernel is built through compute::build_program: a kernel that does not compile is an error that carries
-// the compiler's log — a failure, never a skip.
+// the compiler's log — a failure, never a skip — and constants given as build options reach the kernel as the
+// C++ values.
 #include "compute/opencl_context.hpp"
 
 #include <gtest/gtest.h>
@@ -10,9 +11,12 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "compute/kernel_options.hpp"
 #include "compute/opencl_test_backend.hpp"
+#include "light/light_sum.hpp"
 #include "light/make_light_solver.hpp"
 #include "roots/make_root_field_solver.hpp"
+#include "roots/root_field_solver.hpp"
 
 namespace heliostand::compute {
 namespace {
@@ -62,6 +66,37 @@ TEST(BuildProgram, SolversWhoseKernelDoesNotCompileThrow) {
   const BrokenKernelFiles broken;
   EXPECT_THROW(make_light_solver(*backend, LightParameters{}), std::runtime_error);
   EXPECT_THROW(roots::make_root_field_solver(*backend), std::runtime_error);
+}
+
+TEST(BuildProgram, BuildOptionConstantsAreTheCppValuesInFloat) {
+  const auto backend = opencl_backend_for_test();
+  if (!backend) GTEST_SKIP() << "no OpenCL device";
+  const OpenCLContext& device = *backend->opencl();
+  const auto options = KernelOptions()
+                           .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction)
+                           .define("TOUCHING_DISTANCE", roots::touching_distance_m)
+                           .define("NEGATIVE", -0.1)
+                           .define("BANDS", 16);
+  cl::Program program = build_program(device,
+                                      "kernel void constants(global float* f, global int* n) {\n"
+                                      "  f[0] = BALANCED_LIGHT_FRACTION; f[1] = TOUCHING_DISTANCE;\n"
+                                      "  f[2] = 1.0f-NEGATIVE; n[0] = BANDS;\n"
+                                      "}\n",
+                                      options.text());
+  cl::Buffer floats(device.context, CL_MEM_WRITE_ONLY, 3 * sizeof(float));
+  cl::Buffer integers(device.context, CL_MEM_WRITE_ONLY, sizeof(int));
+  cl::Kernel kernel(program, "constants");
+  kernel.setArg(0, floats);
+  kernel.setArg(1, integers);
+  device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(1), cl::NullRange);
+  float f[3] = {};
+  int n = 0;
+  device.queue.enqueueReadBuffer(floats, CL_TRUE, 0, sizeof f, f);
+  device.queue.enqueueReadBuffer(integers, CL_TRUE, 0, sizeof n, &n);
+  EXPECT_EQ(f[0], static_cast<float>(balanced_light_fraction));
+  EXPECT_EQ(f[1], static_cast<float>(roots::touching_distance_m));
+  EXPECT_EQ(f[2], 1.0f - -0.1f);
+  EXPECT_EQ(n, 16);
 }
 
 }  // namespace

@@ -91,6 +91,17 @@ TEST_P(RootFieldSolverContract, SeveralNeighboursAddUnitDirections) {
   expect_near(sample.contact_avoidance, {-1.0, 1.0, 0.0});
 }
 
+// The touching distance is the C++ constant on both backends (the kernel gets it as a build option): a segment
+// half of it away is not felt, one three times it away is.
+TEST_P(RootFieldSolverContract, ASegmentTouchingTheApexIsNotFelt) {
+  const double touching = touching_distance_m;
+  const RootFieldSample sample = contact({{{0.0, 0.5 * touching, 0.0}, {0.0, 0.5 * touching, -0.2}},
+                                          {{0.0, -3.0 * touching, 0.0}, {0.0, -3.0 * touching, -0.2}}},
+                                         apex_at({0.0, 0.0, 0.0}));
+  EXPECT_EQ(sample.contacts, 1);
+  expect_near(sample.contact_avoidance, {0.0, 1.0, 0.0});
+}
+
 TEST_P(RootFieldSolverContract, OnlyInsideThePerceptionSphere) {
   const std::vector<RootSegmentLine> segments{{{-1.0, 0.35, 0.0}, {1.0, 0.35, 0.0}}};
   EXPECT_EQ(contact(segments, apex_at({0.0, 0.0, 0.0}, 0.3)).contacts, 0);
