@@ -2,7 +2,8 @@
 // balls: (x, y, z, radius) relative to a stand origin chosen by the host (keeps float precision).
 // patches: (N(h,v), S(h,v)); b0: B0 per patch. Output per receiver: (light vector, light).
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
-// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H).
+// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), and BALANCED_LIGHT_FRACTION, made by the
+// host from light_sum.hpp's balanced_light_fraction (the one copy: both backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
 #include "voxel_grid.clh"
 
@@ -15,7 +16,6 @@
 #define WINDOW_MARGIN 1e-3f
 #define WINDOW_MARGIN_COS 0.9999995f  // cos(WINDOW_MARGIN)
 #define WINDOW_MARGIN_SIN 9.9999983e-4f  // sin(WINDOW_MARGIN)
-#define BALANCED_LIGHT_FRACTION 1e-5f
 
 // The ray test of the reference solver: half-line from the receiver along n vs a ball at offset d, radius r.
 inline bool ray_hits(float3 d, float r, float3 n) {

@@ -4,6 +4,8 @@
 // Same meaning as roots::ReferenceRootFieldSolver (the oracle). Candidate segments come from a uniform
 // grid over segment midpoints (roots::SegmentGrid, CSR: segments sorted by cell, cell_start); a midpoint can only
 // matter within R + the longest half segment ("reach"), and cells wholly beyond the reach are skipped. All positions are relative to one frame origin (float precision).
+// Build option TOUCHING_DISTANCE: roots::touching_distance_m, made by the host (segments nearer than this to the
+// apex give no direction and are not counted, on both backends alike).
 // Soil moisture at a point: trilinear interpolation of vertex values, points outside the grid read the
 // nearest boundary value (the same rule as roots::SoilGrid::value). Coordinates relative to the frame origin.
 float soil_moisture(global const float* moisture, int4 vertices, float3 soil_origin, float spacing, float3 p) {
@@ -21,8 +23,6 @@ float soil_moisture(global const float* moisture, int4 vertices, float3 soil_ori
   }
   return sum;
 }
-
-#define TOUCHING_DISTANCE 1e-5f
 
 int3 grid_cell(float3 p, float3 grid_origin, float cell_size, int3 dims) {
   return clamp(convert_int3(floor((p - grid_origin) / cell_size)), (int3)(0), dims - 1);

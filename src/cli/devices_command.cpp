@@ -12,13 +12,15 @@ void add_devices_command(CLI::App& app) {
   auto* devices = app.add_subcommand("devices", "List the compute devices (--device values) and mark the default");
   devices->callback([] {
     const auto list = compute::list_opencl_devices();
-    if (list.empty())
-      std::cout << "no OpenCL platform or device found: --device auto uses the reference solver\n";
+    if (!compute::opencl_backend_built)
+      std::cout << "this build has no OpenCL backend (HELIOSTAND_OPENCL=OFF): --device auto uses the reference solvers\n";
+    else if (list.empty())
+      std::cout << "no OpenCL platform or device found: --device auto uses the reference solvers\n";
     for (const auto& d : list)
       std::cout << fmt::format("{} opencl:{}  {} / {}  ({}, {}, {} compute units){}\n", d.is_default ? "*" : " ",
                                d.index, d.platform, d.name, d.type, d.version, d.compute_units,
                                d.is_default ? "  [default]" : "");
-    std::cout << fmt::format("{} reference  plain C++ solver (the oracle; always available){}\n",
+    std::cout << fmt::format("{} reference  plain C++ solvers of light and roots (the oracles; always available){}\n",
                              list.empty() ? "*" : " ", list.empty() ? "  [default]" : "");
   });
 }

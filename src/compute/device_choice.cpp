@@ -40,6 +40,8 @@ std::string DeviceChoice::text() const {
   return "auto";
 }
 
+bool opencl_device_exists() { return !list_opencl_devices().empty(); }
+
 #ifndef HELIOSTAND_HAVE_OPENCL
 std::vector<OpenCLDeviceInfo> list_opencl_devices() { return {}; }
 #endif

@@ -1,5 +1,6 @@
 #pragma once
-// Which compute backend runs the light (and root) fields: the --device option.
+// Which compute backend runs the light and root-contact fields: the --device option (run.device in a scenario).
+// compute/compute_backend.hpp opens the chosen one.
 //   auto       first OpenCL device; no OpenCL platform -> warn once, use the reference solver
 //   reference  the plain C++ oracle
 //   opencl     first OpenCL device; none -> error
@@ -34,5 +35,15 @@ struct OpenCLDeviceInfo {
 // Every OpenCL device of every platform; empty when there is no OpenCL platform (clGetPlatformIDs -> -1001)
 // or when the build has no OpenCL.
 std::vector<OpenCLDeviceInfo> list_opencl_devices();
+
+// True when `auto` would pick an OpenCL device. The one reason an OpenCL test may skip is that this is false.
+bool opencl_device_exists();
+
+// Whether this build has the OpenCL backend (CMake option HELIOSTAND_OPENCL).
+#ifdef HELIOSTAND_HAVE_OPENCL
+inline constexpr bool opencl_backend_built = true;
+#else
+inline constexpr bool opencl_backend_built = false;
+#endif
 
 }  // namespace heliostand::compute

@@ -1,6 +1,7 @@
 #pragma once
 // An OpenCL device ready to run kernels: context, in-order queue, and program building with the build log
-// in the error. Included only by opencl_*.cpp files (the OpenCL backend is optional at build time).
+// in the error. Included only by opencl_*.cpp files and, in OpenCL builds, compute_backend.cpp (the OpenCL
+// backend is optional at build time). A copy shares the same context and queue (OpenCL handles are counted).
 #include <optional>
 #include <string>
 

@@ -125,15 +125,17 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
     }
   }
 
-  auto reference_exact_solver = make_light_solver("reference", exact);
-  auto reference_culled_solver = make_light_solver("reference", culled);
+  const auto reference = compute::ComputeBackend::reference();
+  auto reference_exact_solver = make_light_solver(reference, exact);
+  auto reference_culled_solver = make_light_solver(reference, culled);
   Run reference_exact = time_solver("reference exact", *reference_exact_solver, balls, subsample, options.reference_exact_max);
   Run reference_culled = time_solver("reference culled", *reference_culled_solver, balls, subsample, options.reference_culled_max);
   Run opencl_exact, opencl_culled;
   std::string device = "none";
   if (options.opencl_device != "none") {
-    auto exact_solver = make_light_solver(options.opencl_device, exact);
-    auto culled_solver = make_light_solver(options.opencl_device, culled);
+    const auto opencl = compute::ComputeBackend::open(compute::DeviceChoice::parse(options.opencl_device));
+    auto exact_solver = make_light_solver(opencl, exact);
+    auto culled_solver = make_light_solver(opencl, culled);
     device = culled_solver->name();
     (void)culled_solver->solve(std::span(balls).first(std::min<std::size_t>(balls.size(), 64)));  // warm-up
     opencl_exact = time_solver("opencl exact", *exact_solver, balls, subsample, options.opencl_exact_max);

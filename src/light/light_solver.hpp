@@ -2,7 +2,7 @@
 // The light field of seed 000 (Kanamaru et al.): for every leaf ball, the sky light that reaches it
 // through all other leaf balls of the stand, and the direction it comes from. Two implementations
 // (the OpenMM pattern): ReferenceLightSolver, the plain C++ oracle, and OpenCLLightSolver, the default.
-// make_light_solver() (light/make_light_solver.hpp) picks one from a --device string.
+// make_light_solver() (light/make_light_solver.hpp) picks the one of the run's compute backend (--device).
 #include <cstdint>
 #include <memory>
 #include <span>

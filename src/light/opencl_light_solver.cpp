@@ -7,11 +7,12 @@
 
 #include <glm/common.hpp>
 
+#include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
-#include "compute/device_choice.hpp"
 #include "compute/opencl_context.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
+#include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
 
@@ -128,25 +129,17 @@ struct OpenCLLightSolver::Device {
   cl::Kernel each_alone;
 };
 
-bool opencl_available() {
-  try {
-    return !compute::list_opencl_devices().empty();
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, std::optional<int> device_index)
+OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const compute::OpenCLContext& device)
     : parameters_(parameters) {
   validate(parameters_);
-  auto context = compute::open_opencl_device(device_index);
-  if (!context) throw std::runtime_error("no OpenCL device found (see `heliostand devices`); use --device reference");
   device_ = std::make_unique<Device>();
-  device_->cl = std::move(*context);
-  const std::string options = "-DSKY_BANDS=" + std::to_string(parameters_.sky_bands) +
-                              " -DSKY_SECTORS=" + std::to_string(parameters_.sky_sectors);
+  device_->cl = device;
+  const auto options = compute::KernelOptions()
+                           .define("SKY_BANDS", parameters_.sky_bands)
+                           .define("SKY_SECTORS", parameters_.sky_sectors)
+                           .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction);
   const std::string source = compute::kernel_source("far_field.cl") + compute::kernel_source("light.cl");
-  device_->program = compute::build_program(device_->cl, source, options);
+  device_->program = compute::build_program(device_->cl, source, options.text());
   device_->exact = cl::Kernel(device_->program, "light_exact");
   device_->culled = cl::Kernel(device_->program, "light_culled");
   device_->far_field_layer = cl::Kernel(device_->program, "far_field_layer");

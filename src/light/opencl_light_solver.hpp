@@ -2,17 +2,20 @@
 // The default light solver: cl/light.cl on an OpenCL device, float on the device, one work item per
 // receiving ball. Same model and same inputs (near-field candidates, far-field table) as the reference.
 #include <memory>
-#include <optional>
 
 #include "light/light_parameters.hpp"
 #include "light/light_solver.hpp"
+
+namespace heliostand::compute {
+struct OpenCLContext;
+}
 
 namespace heliostand {
 
 class OpenCLLightSolver final : public LightSolver {
  public:
-  // Device `index` (nullopt = default). Throws std::runtime_error when there is no such OpenCL device.
-  OpenCLLightSolver(const LightParameters& parameters, std::optional<int> device_index);
+  // Runs on `device` (the run's compute backend, shared with the other solvers); builds cl/light.cl for it.
+  OpenCLLightSolver(const LightParameters& parameters, const compute::OpenCLContext& device);
   ~OpenCLLightSolver() override;
   std::string name() const override;
   std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
@@ -26,8 +29,5 @@ class OpenCLLightSolver final : public LightSolver {
   LightParameters parameters_;
   std::unique_ptr<Device> device_;
 };
-
-// True when at least one OpenCL device exists (used by the factory and by tests to skip OpenCL cases).
-bool opencl_available();
 
 }  // namespace heliostand

@@ -5,21 +5,19 @@
 #include <stdexcept>
 
 #include <CL/opencl.hpp>
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
+#include "compute/opencl_context.hpp"
 #include "roots/segment_grid.hpp"
 
 namespace heliostand::roots {
 
 struct OpenCLRootFieldSolver::State {
-  cl::Context context;
-  cl::Device device;
-  cl::CommandQueue queue;
+  compute::OpenCLContext cl;
   cl::Program program;
   cl::Kernel kernel;
-  std::string device_name;
 };
 
 namespace {
@@ -37,43 +35,17 @@ cl::Buffer read_only_buffer(const cl::Context& context, std::vector<T>& data) {
 
 }  // namespace
 
-OpenCLRootFieldSolver::OpenCLRootFieldSolver(int device_index) : state_(std::make_unique<State>()) {
-  std::vector<cl::Platform> platforms;
-  try {
-    cl::Platform::get(&platforms);
-  } catch (const cl::Error& error) {
-    throw std::runtime_error(fmt::format("no OpenCL platform ({}: {})", error.what(), error.err()));
-  }
-  std::vector<cl::Device> devices;
-  for (const cl::Platform& platform : platforms) {
-    std::vector<cl::Device> found;
-    try {
-      platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-    } catch (const cl::Error&) {
-      continue;  // a platform without devices
-    }
-    devices.insert(devices.end(), found.begin(), found.end());
-  }
-  if (device_index < 0 || device_index >= static_cast<int>(devices.size()))
-    throw std::runtime_error(fmt::format("no OpenCL device {} ({} found)", device_index, devices.size()));
-
+OpenCLRootFieldSolver::OpenCLRootFieldSolver(const compute::OpenCLContext& device) : state_(std::make_unique<State>()) {
   State& s = *state_;
-  s.device = devices[device_index];
-  s.device_name = s.device.getInfo<CL_DEVICE_NAME>();
-  s.context = cl::Context(s.device);
-  s.queue = cl::CommandQueue(s.context, s.device);
-  s.program = cl::Program(s.context, compute::kernel_source("roots.cl"));
-  try {
-    s.program.build({s.device}, "-cl-std=CL1.2");
-  } catch (const cl::Error&) {
-    throw std::runtime_error("roots.cl failed to build:\n" + s.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(s.device));
-  }
+  s.cl = device;
+  const auto options = compute::KernelOptions().flag("-cl-std=CL1.2").define("TOUCHING_DISTANCE", touching_distance_m);
+  s.program = compute::build_program(s.cl, compute::kernel_source("roots.cl"), options.text());
   s.kernel = cl::Kernel(s.program, "root_contact_field");
 }
 
 OpenCLRootFieldSolver::~OpenCLRootFieldSolver() = default;
 
-std::string OpenCLRootFieldSolver::name() const { return "opencl:" + state_->device_name; }
+std::string OpenCLRootFieldSolver::name() const { return "opencl:" + state_->cl.description; }
 
 std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& input) {
   std::vector<RootFieldSample> samples(input.tips.size());
@@ -131,18 +103,18 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
   }
   std::vector<int> cell_start = grid.cell_start, segment_ids = grid.cell_segments;
 
-  cl::Buffer middle_buffer = read_only_buffer(s.context, middles);
-  cl::Buffer start_buffer = read_only_buffer(s.context, starts);
-  cl::Buffer end_buffer = read_only_buffer(s.context, ends);
-  cl::Buffer segment_id_buffer = read_only_buffer(s.context, segment_ids);
-  cl::Buffer cell_start_buffer = read_only_buffer(s.context, cell_start);
-  cl::Buffer tip_buffer = read_only_buffer(s.context, tips);
-  cl::Buffer excluded_buffer = read_only_buffer(s.context, excluded);
-  cl::Buffer probe_buffer = read_only_buffer(s.context, probes);
-  cl::Buffer moisture_buffer = read_only_buffer(s.context, moisture);
+  cl::Buffer middle_buffer = read_only_buffer(s.cl.context, middles);
+  cl::Buffer start_buffer = read_only_buffer(s.cl.context, starts);
+  cl::Buffer end_buffer = read_only_buffer(s.cl.context, ends);
+  cl::Buffer segment_id_buffer = read_only_buffer(s.cl.context, segment_ids);
+  cl::Buffer cell_start_buffer = read_only_buffer(s.cl.context, cell_start);
+  cl::Buffer tip_buffer = read_only_buffer(s.cl.context, tips);
+  cl::Buffer excluded_buffer = read_only_buffer(s.cl.context, excluded);
+  cl::Buffer probe_buffer = read_only_buffer(s.cl.context, probes);
+  cl::Buffer moisture_buffer = read_only_buffer(s.cl.context, moisture);
   const std::size_t tip_count = input.tips.size();
-  cl::Buffer contact_out(s.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
-  cl::Buffer moisture_out(s.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
+  cl::Buffer contact_out(s.cl.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
+  cl::Buffer moisture_out(s.cl.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
 
   int arg = 0;
   s.kernel.setArg(arg++, middle_buffer);
@@ -166,11 +138,11 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& 
   s.kernel.setArg(arg++, static_cast<cl_int>(input.soil != nullptr ? 1 : 0));
   s.kernel.setArg(arg++, contact_out);
   s.kernel.setArg(arg++, moisture_out);
-  s.queue.enqueueNDRangeKernel(s.kernel, cl::NullRange, cl::NDRange(tip_count), cl::NullRange);
+  s.cl.queue.enqueueNDRangeKernel(s.kernel, cl::NullRange, cl::NDRange(tip_count), cl::NullRange);
 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);
-  s.queue.enqueueReadBuffer(contact_out, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
-  s.queue.enqueueReadBuffer(moisture_out, CL_TRUE, 0, sizeof(cl_float4) * tip_count, pulls.data());
+  s.cl.queue.enqueueReadBuffer(contact_out, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
+  s.cl.queue.enqueueReadBuffer(moisture_out, CL_TRUE, 0, sizeof(cl_float4) * tip_count, pulls.data());
   for (std::size_t i = 0; i < tip_count; ++i) {
     RootFieldSample& sample = samples[order[i]];
     sample.contact_avoidance = {contacts[i].s[0], contacts[i].s[1], contacts[i].s[2]};

@@ -4,7 +4,8 @@
 //   contact avoidance  Vt = −Σ unit(direction from the apex to each other root segment in the sphere)
 //   moisture pull      Vw =  Σ unit(probe_k) · moisture(apex + R · probe_k)   over the K probes
 // computed for the roots of ALL trees at once. Two implementations (the OpenMM pattern, as for light):
-// ReferenceRootFieldSolver, plain C++ and the oracle, and OpenCLRootFieldSolver (float on the device).
+// ReferenceRootFieldSolver, plain C++ and the oracle, and OpenCLRootFieldSolver (float on the device);
+// make_root_field_solver() (roots/make_root_field_solver.hpp) picks the one of the run's compute backend.
 // The probe directions are inputs, drawn on the host, so both backends see the same probes.
 #include <span>
 #include <string>
@@ -41,7 +42,8 @@ struct RootFieldSample {
   glm::dvec3 moisture_pull{0.0};      // Vw before normalisation
 };
 
-// Segments nearer than this to the apex give no direction and are not counted.
+// Segments nearer than this to the apex give no direction and are not counted (cl/roots.cl gets this value as
+// the build option TOUCHING_DISTANCE).
 inline constexpr double touching_distance_m = 1e-5;
 
 class RootFieldSolver {

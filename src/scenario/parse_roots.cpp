@@ -86,13 +86,10 @@ void parse_roots(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
   TomlTableReader reader(*table, "roots", problems);
   RootsSettings& settings = draft.scenario.roots;
   if (auto enabled = reader.boolean("enabled")) settings.enabled = *enabled;
-  if (auto solver = reader.string("solver")) {
-    if (*solver == "reference" || *solver == "opencl") {
-      settings.solver = *solver;
-    } else {
-      reader.problem("solver", fmt::format("expected \"reference\" or \"opencl\", got \"{}\"", *solver));
-    }
-  }
+  // Scenarios written before light and roots shared one device chose the root backend here.
+  if (reader.node("solver"))
+    reader.problem("solver", "no longer read: run.device (or grow --device) runs the light and the roots on one "
+                             "backend");
   for (auto&& [key, value] : *table) {
     const std::string name(key.str());
     if (name == "enabled" || name == "solver") continue;

@@ -47,7 +47,6 @@ struct RootPruningEvent {
 
 struct RootsSettings {
   bool enabled = true;
-  std::string solver = "reference";   // root-contact field backend: "reference" (FLANN) or "opencl"
   std::map<std::string, roots::RootParameters> by_species;  // species without an entry: tap_rooted_conifer()
   SoilSettings soil;
   CouplingParameters coupling;

@@ -6,8 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "roots/opencl_root_field.hpp"
-#include "roots/reference_root_field_solver.hpp"
+#include "roots/make_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
 #include "roots/root_vtk.hpp"
 #include "roots/soil_file.hpp"
@@ -25,11 +24,6 @@ void fill_field(roots::SoilGrid& soil, roots::SoilField field, const SoilFieldSe
   }
 }
 
-std::unique_ptr<roots::RootFieldSolver> make_root_solver(const std::string& name) {
-  if (name == "opencl") return std::make_unique<roots::OpenCLRootFieldSolver>();
-  return std::make_unique<roots::ReferenceRootFieldSolver>();
-}
-
 }  // namespace
 
 roots::SoilGrid make_soil(const SoilSettings& settings, const PlotBounds& plot) {
@@ -45,12 +39,13 @@ roots::SoilGrid make_soil(const SoilSettings& settings, const PlotBounds& plot) 
   return soil;
 }
 
-RootZone::RootZone(RootsSettings settings, const PlotBounds& plot, std::uint64_t seed, double sky_scale)
+RootZone::RootZone(RootsSettings settings, const PlotBounds& plot, std::uint64_t seed, double sky_scale,
+                   const compute::ComputeBackend& backend)
     : settings_(std::move(settings)),
       seed_(seed),
       sky_scale_(sky_scale),
       soil_(make_soil(settings_.soil, plot)),
-      solver_(make_root_solver(settings_.solver)) {}
+      solver_(roots::make_root_field_solver(backend)) {}
 
 RootZone::~RootZone() = default;
 RootZone::RootZone(RootZone&&) noexcept = default;
@@ -182,10 +177,11 @@ vtkSmartPointer<vtkImageData> RootZone::soil_block() const { return roots::soil_
 
 namespace heliostand {
 
-std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand) {
+std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
+                                            const compute::ComputeBackend& backend) {
   if (!scenario.roots.enabled) return std::nullopt;
   std::optional<RootZone> zone;
-  zone.emplace(scenario.roots, scenario.stand.plot, scenario.run.seed, scenario.light.sky_scale);
+  zone.emplace(scenario.roots, scenario.stand.plot, scenario.run.seed, scenario.light.sky_scale, backend);
   zone->establish(stand);
   return zone;
 }

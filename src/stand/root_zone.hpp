@@ -2,7 +2,7 @@
 // The roots of every tree of the stand in one shared soil, and each tree's crown–root balance (seed 003
 // + MODEL.md §5). The stand manager drives it once a year after the light solve:
 //
-//   RootZone zone(settings, plot, seed, sky_scale);
+//   RootZone zone(settings, plot, seed, sky_scale, backend);   // the run's compute backend, as for light
 //   zone.establish(stand);             // spin-up: roots grown from each tree's planting to the survey age
 //   zone.couple(stand);                // year 0: balance only (Branch_n for the first crown step)
 //   each year:  stand.grow_year(); stand.illuminate(solver); zone.grow_year(stand);
@@ -20,6 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "compute/compute_backend.hpp"
 #include "coupling/crown_root_balance.hpp"
 #include "io/stand_snapshot.hpp"
 #include "roots/root_field_solver.hpp"
@@ -40,7 +41,9 @@ struct TreeRootSummary {
 
 class RootZone {
  public:
-  RootZone(RootsSettings settings, const PlotBounds& plot, std::uint64_t seed, double sky_scale);
+  // The root-contact field runs on `backend` (the device the stand's light runs on).
+  RootZone(RootsSettings settings, const PlotBounds& plot, std::uint64_t seed, double sky_scale,
+           const compute::ComputeBackend& backend);
   ~RootZone();
   RootZone(RootZone&&) noexcept;
 
@@ -88,8 +91,9 @@ struct Scenario;
 class VtkTimeSeriesWriter;
 
 // The stand's root zone as the scenario asks ([roots] enabled, soil, coupling, pruning), established
-// (spun up) under the stand; nullopt when roots are off.
-std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand);
+// (spun up) under the stand, its root-contact field on `backend`; nullopt when roots are off.
+std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
+                                            const compute::ComputeBackend& backend);
 
 // Adds the `roots` (segment polylines) and `soil` (vtkImageData) blocks to every year the writer writes.
 void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone);

@@ -5,6 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "compute/compute_backend.hpp"
 #include "io/stand_output.hpp"
 #include "light/make_light_solver.hpp"
 #include "stand/establishment.hpp"
@@ -56,13 +57,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const auto started = std::chrono::steady_clock::now();
   RunManifest manifest;
   manifest.started_utc = utc_now_iso8601();
-  // The solver first: a device that does not exist must fail before the output folder is taken.
-  const std::string device = options.device.empty() ? scenario.run.device.text() : options.device;
-  auto solver = make_light_solver(device, light_for(scenario));
-  spdlog::info("light solver: {}", solver->name());
-  // The open-grown reference of the light response (each tree alone, once a year): a few hundred balls, so
-  // the exact solver is cheapest (culling and far field only pay off for a whole stand), and a tree alone is
-  // not repeated across periodic plot edges.
+  // The backend and solvers first: a device that does not exist must fail before the output folder is taken.
+  // One backend for the whole run: the light of the stand, the open-grown light and the roots share its device.
+  const auto backend = compute::ComputeBackend::open(
+      options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
+  spdlog::info("compute backend (light and roots): {}", backend.name());
+  auto solver = make_light_solver(backend, light_for(scenario));
   // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
   // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
   // edges; and it sees the reference sky (sky_scale 1), so a dimmer stand sky lowers every relative light.
@@ -70,7 +70,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   open_grown.exact = true;
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
-  auto open_grown_solver = make_light_solver(device, open_grown);
+  auto open_grown_solver = make_light_solver(backend, open_grown);
   StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
 
   StageClock clock;
@@ -82,7 +82,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
               schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
-  auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand); });
+  auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
 
   ProgressLine progress(scenario.run.years, options.show_progress);
@@ -111,7 +111,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   manifest.command_line = options.command_line;
   manifest.scenario_path = scenario.file.string();
   manifest.seed = scenario.run.seed;
-  manifest.device = solver->name();
+  manifest.device = backend.name();
   manifest.first_stand_age = summary.first_stand_age;
   manifest.last_stand_age = summary.last_stand_age;
   manifest.stage_seconds = clock.stages();

@@ -16,6 +16,7 @@
 #include <map>
 
 #include "cli/cli_runner.hpp"
+#include "compute/device_choice.hpp"
 #include "io/csv_test_reader.hpp"
 
 namespace heliostand::testing {
@@ -161,6 +162,15 @@ void check_vtk_years(const fs::path& folder) {
     EXPECT_EQ(habitat->GetTuple1(p), tree_id->GetTuple1(p) == 4 ? 1.0 : 0.0) << "tree_id " << tree_id->GetTuple1(p);
 }
 
+// Without an OpenCL device (or in a build without OpenCL) --device opencl must be refused before any output.
+void check_opencl_refused() {
+  const auto opencl = scratch_folder("tiny_opencl");
+  const auto run = grow_tiny(opencl, "--device opencl");
+  EXPECT_NE(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("device 'opencl'"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(opencl)) << "no output for a device that does not exist";
+}
+
 void check_opencl_agrees(const fs::path& folder) {
   const auto opencl = scratch_folder("tiny_opencl");
   const auto run = grow_tiny(opencl, "--device opencl");
@@ -193,18 +203,21 @@ TEST(GrowCli, TinyStandEndToEnd) {
     SCOPED_TRACE("VTK years read back");
     check_vtk_years(folder);
   }
-  {
+  if (compute::opencl_device_exists()) {
     SCOPED_TRACE("OpenCL run agrees with the reference run");
     check_opencl_agrees(folder);
+  } else {
+    SCOPED_TRACE("no OpenCL device: --device opencl is refused");
+    check_opencl_refused();
   }
 }
 
 TEST(GrowCli, SameSeedGivesIdenticalTablesAndAnotherSeedDoesNot) {
   const auto first = scratch_folder("tiny_seed_7_a"), again = scratch_folder("tiny_seed_7_b");
   const auto other = scratch_folder("tiny_seed_99");
-  ASSERT_EQ(grow_tiny(first, "--device opencl").status, 0);
-  ASSERT_EQ(grow_tiny(again, "--device opencl").status, 0);
-  ASSERT_EQ(grow_tiny(other, "--device opencl --seed 99").status, 0);
+  ASSERT_EQ(grow_tiny(first, "--device auto").status, 0);
+  ASSERT_EQ(grow_tiny(again, "--device auto").status, 0);
+  ASSERT_EQ(grow_tiny(other, "--device auto --seed 99").status, 0);
   EXPECT_EQ(read_text(first / "trees.csv"), read_text(again / "trees.csv"));
   EXPECT_EQ(read_text(first / "stand_table.csv"), read_text(again / "stand_table.csv"));
   EXPECT_NE(read_text(first / "trees.csv"), read_text(other / "trees.csv"));

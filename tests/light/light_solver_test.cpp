@@ -9,8 +9,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "compute/opencl_test_backend.hpp"
 #include "light/celestial_sphere.hpp"
-#include "light/opencl_light_solver.hpp"
+#include "light/make_light_solver.hpp"
 #include "light/reference_light_solver.hpp"
 #include "light_test_stands.hpp"
 
@@ -22,15 +23,15 @@ constexpr double pi = std::numbers::pi;
 enum class Backend { reference, opencl };
 enum class Mode { exact, culled };
 
-std::unique_ptr<LightSolver> make_solver(Backend backend, const LightParameters& p) {
-  if (backend == Backend::reference) return std::make_unique<ReferenceLightSolver>(p);
-  return std::make_unique<OpenCLLightSolver>(p, std::nullopt);
-}
-
 class LightSolverTest : public ::testing::TestWithParam<std::tuple<Backend, Mode, bool>> {
  protected:
   void SetUp() override {
-    if (backend() == Backend::opencl && !opencl_available()) GTEST_SKIP() << "no OpenCL device";
+    if (backend() == Backend::reference) {
+      compute_ = compute::ComputeBackend::reference();
+    } else {
+      compute_ = compute::opencl_backend_for_test();
+      if (!compute_) GTEST_SKIP() << "no OpenCL device";
+    }
   }
   Backend backend() const { return std::get<0>(GetParam()); }
   // Culled mode with a cut-off beyond the test scenes: every occluder is near field, the far field is empty,
@@ -48,8 +49,9 @@ class LightSolverTest : public ::testing::TestWithParam<std::tuple<Backend, Mode
     return p;
   }
   std::vector<LightSample> solve(const LightParameters& p, const std::vector<LeafBall>& balls) {
-    return make_solver(backend(), p)->solve(balls);
+    return make_light_solver(*compute_, p)->solve(balls);
   }
+  std::optional<compute::ComputeBackend> compute_;
 };
 
 // Solid angle of band v, written out independently of CelestialSphere.
@@ -211,7 +213,7 @@ TEST_P(LightSolverTest, EachGroupAloneMatchesSolvingItByItself) {
   balls.insert(balls.end(), second.begin(), second.end());
   balls.insert(balls.end(), lone.begin(), lone.end());
   const std::vector<std::size_t> groups{0, first.size(), first.size(), balls.size() - 1, balls.size()};  // one empty
-  auto solver = make_solver(backend(), p);
+  auto solver = make_light_solver(*compute_, p);
   const auto together = solver->solve_each_alone(balls, groups);
   ASSERT_EQ(together.size(), balls.size());
   std::vector<LightSample> apart = solver->solve(first);
@@ -253,7 +255,8 @@ double angle_degrees(const glm::dvec3& a, const glm::dvec3& b) {
 }
 
 TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
-  if (!opencl_available()) GTEST_SKIP() << "no OpenCL device";
+  const auto device = compute::opencl_backend_for_test();
+  if (!device) GTEST_SKIP() << "no OpenCL device";
   LightParameters p;
   p.exact = GetParam().exact;
   p.periodic = GetParam().periodic;
@@ -266,9 +269,9 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
   for (std::uint64_t seed : {1u, 2u}) {
     const auto balls = testing::random_stand(120, size, 0.2, 0.7, seed, sky, p.periodic);
     ReferenceLightSolver reference(p);
-    OpenCLLightSolver opencl(p, std::nullopt);
+    const auto opencl = make_light_solver(*device, p);
     const auto expected = reference.solve(balls);
-    const auto actual = opencl.solve(balls);
+    const auto actual = opencl->solve(balls);
     ASSERT_EQ(actual.size(), balls.size());
     double lowest = 1;
     for (std::size_t k = 0; k < balls.size(); ++k) {

@@ -5,14 +5,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "compute/device_choice.hpp"
-#include "light/opencl_light_solver.hpp"
+#include "compute/compute_backend.hpp"
 #include "light/sky_openness.hpp"
 
 namespace heliostand {
 namespace {
 
+using compute::ComputeBackend;
 using compute::DeviceChoice;
+
+ComputeBackend backend(const char* device) { return ComputeBackend::open(DeviceChoice::parse(device)); }
 
 TEST(DeviceChoice, ParsesTheDeviceStrings) {
   EXPECT_EQ(DeviceChoice::parse("auto").kind, DeviceChoice::Kind::automatic);
@@ -24,40 +26,27 @@ TEST(DeviceChoice, ParsesTheDeviceStrings) {
     EXPECT_THROW(DeviceChoice::parse(bad), std::invalid_argument) << bad;
 }
 
-TEST(MakeLightSolver, ReferenceOnRequestOpenCLByDefaultWhenPresent) {
-  const LightParameters p;
-  EXPECT_EQ(make_light_solver("reference", p)->name(), "reference");
-  const auto automatic = make_light_solver("auto", p);
-  if (opencl_available())
-    EXPECT_EQ(automatic->name().rfind("opencl:", 0), 0u) << automatic->name();
-  else
-    EXPECT_EQ(automatic->name(), "reference");  // fallback (with one warning)
-}
-
-TEST(MakeLightSolver, MissingOpenCLDeviceIsAnError) {
-  EXPECT_THROW(make_light_solver("opencl:999", LightParameters{}), std::runtime_error);
-  EXPECT_THROW(make_light_solver("gpu", LightParameters{}), std::invalid_argument);
-}
+// Which solver each backend gets, and a missing device: tests/compute/compute_backend_test.cpp.
 
 TEST(MakeLightSolver, BadParametersAreRejectedWithTheFieldName) {
   LightParameters p;
   p.transmittance = 1.5;
   try {
-    make_light_solver("reference", p);
+    make_light_solver(ComputeBackend::reference(), p);
     FAIL() << "accepted t = 1.5";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("transmittance"), std::string::npos) << e.what();
   }
   p = {};
   p.periodic = true;  // without plot bounds
-  EXPECT_THROW(make_light_solver("reference", p), std::invalid_argument);
+  EXPECT_THROW(make_light_solver(ComputeBackend::reference(), p), std::invalid_argument);
 }
 
 TEST(MakeLightSolver, ReceiverOutsideTheStandIsAnError) {
   const std::vector<LeafBall> balls{{{0, 0, 0}, 0.5}, {{0, 0, 2}, 0.5}};
   const std::vector<std::uint32_t> receivers{1, 2};
   for (const char* device : {"reference", "auto"})
-    EXPECT_THROW(make_light_solver(device, LightParameters{})->solve_for(balls, receivers), std::out_of_range)
+    EXPECT_THROW(make_light_solver(backend(device), LightParameters{})->solve_for(balls, receivers), std::out_of_range)
         << device;
 }
 

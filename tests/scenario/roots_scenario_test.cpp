@@ -19,7 +19,6 @@ using testing::scenario_problems;
 TEST(RootsScenario, DefaultsWhenNoTables) {
   const Scenario s = load_scenario(write_scenario("roots_defaults", minimal_stand));
   EXPECT_TRUE(s.roots.enabled);
-  EXPECT_EQ(s.roots.solver, "reference");
   EXPECT_TRUE(s.roots.by_species.empty());
   EXPECT_EQ(s.roots.parameters_of("todomatsu").of(roots::RootType::lateral).elongation_m_per_year,
             roots::tap_rooted_conifer().of(roots::RootType::lateral).elongation_m_per_year);
@@ -31,7 +30,7 @@ TEST(RootsScenario, DefaultsWhenNoTables) {
 
 TEST(RootsScenario, EveryTableReachesTheSettings) {
   const Scenario s = load_scenario(write_scenario("roots_all", minimal_stand +
-      "[roots]\nenabled = false\nsolver = \"opencl\"\n"
+      "[roots]\nenabled = false\n"
       "[roots.todomatsu]\nmax_woody_order = 2\nuptake_rate_per_m = 0.1\n"
       "[roots.todomatsu.lateral]\nelongation_m_per_year = 0.3\nbranching_to_fine = 2.0\n"
       "alpha = 0.4\nbeta = 0.1\ngamma = 0.4\ndelta = 0.05\nepsilon = 0.05\n"
@@ -42,7 +41,6 @@ TEST(RootsScenario, EveryTableReachesTheSettings) {
       "[[root_pruning]]\nevery_year = true\nsectors = [6, 7, 0, 1]\nmin_depth_m = 0.1\n"
       "[[root_pruning]]\nage = 25\ntrees = [\"2\", 3]\n"));
   EXPECT_FALSE(s.roots.enabled);
-  EXPECT_EQ(s.roots.solver, "opencl");
   const roots::RootParameters& p = s.roots.by_species.at("todomatsu");
   EXPECT_EQ(p.max_woody_order, 2);
   EXPECT_DOUBLE_EQ(p.uptake_rate_per_m, 0.1);
@@ -81,7 +79,8 @@ TEST(RootsScenario, BadValuesNameLineAndKey) {
       "[[root_pruning]]\nsectors = [8]\n"                             // 23, 24
       "[[root_pruning]]\nage = 40\nevery_year = true\n");             // 25, 26, 27
   std::vector<std::string> expected{
-          "scenario.toml:12: key 'roots.solver': expected \"reference\" or \"opencl\", got \"gpu\"",
+          "scenario.toml:12: key 'roots.solver': no longer read: run.device (or grow --device) runs the light and "
+          "the roots on one backend",
           "scenario.toml:13: key 'roots.ezomatsu': no species \"ezomatsu\" (a [roots.SPECIES] table names a [species] "
           "table, or todomatsu when there is none)",
           "scenario.toml:16: key 'roots.todomatsu.lateral.radius_m': expected a number > 0, got -1",

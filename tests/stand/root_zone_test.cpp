@@ -37,7 +37,7 @@ TEST(RootZone, SoilCoversThePlotToItsDepth) {
 
 TEST(RootZone, SpinUpGrowsEachTreeFromItsPlanting) {
   Stand stand = two_tree_stand();
-  RootZone zone(RootsSettings{}, plot, 9, 1.0);
+  RootZone zone(RootsSettings{}, plot, 9, 1.0, compute::ComputeBackend::reference());
   zone.establish(stand);
   for (int id : {0, 1}) {
     const roots::RootSystem* roots = zone.roots_of(id);
@@ -60,7 +60,7 @@ TEST(RootZone, SpinUpGrowsEachTreeFromItsPlanting) {
 
 TEST(RootZone, CoupleHandsBranchToTheCrownAndRootToTheRoots) {
   Stand stand = two_tree_stand();
-  RootZone zone(RootsSettings{}, plot, 9, 1.0);
+  RootZone zone(RootsSettings{}, plot, 9, 1.0, compute::ComputeBackend::reference());
   zone.establish(stand);
   for (std::size_t i = 0; i < 2; ++i) {
     // Full light on every leaf ball.
@@ -84,7 +84,7 @@ TEST(RootZone, PruningEveryYearClearsItsPathOfTheNamedTreeOnly) {
   Stand stand = two_tree_stand();
   RootsSettings settings;
   settings.pruning.push_back({0, std::nullopt, true, {0, 1}, 0.0, 0.0, {"1"}});
-  RootZone zone(settings, plot, 9, 1.0);
+  RootZone zone(settings, plot, 9, 1.0, compute::ComputeBackend::reference());
   zone.establish(stand);
   auto old_segments_in = [&](int id, int year) {
     int n = 0;
@@ -101,7 +101,7 @@ TEST(RootZone, PruningEveryYearClearsItsPathOfTheNamedTreeOnly) {
 
 TEST(RootZone, RemovedTreesLoseTheirRoots) {
   Stand stand = two_tree_stand();
-  RootZone zone(RootsSettings{}, plot, 9, 1.0);
+  RootZone zone(RootsSettings{}, plot, 9, 1.0, compute::ComputeBackend::reference());
   zone.establish(stand);
   stand.tree_at(1).status = TreeStatus::removed;
   stand.grow_year();

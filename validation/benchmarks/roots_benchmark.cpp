@@ -7,10 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include "compute/compute_backend.hpp"
 #include "rng/random_stream.hpp"
-#ifdef HELIOSTAND_HAVE_OPENCL
-#include "roots/opencl_root_field.hpp"
-#endif
+#include "roots/make_root_field_solver.hpp"
 #include "roots/reference_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
 
@@ -78,20 +77,16 @@ void BM_RootField_Reference(benchmark::State& state) {
   run(state, solver, state.range(0) != 0);
 }
 
-#ifdef HELIOSTAND_HAVE_OPENCL
 void BM_RootField_OpenCL(benchmark::State& state) {
-  std::unique_ptr<OpenCLRootFieldSolver> solver;
-  try {
-    solver = std::make_unique<OpenCLRootFieldSolver>();
-  } catch (const std::exception& error) {
-    state.SkipWithError(error.what());
+  if (!compute::opencl_device_exists()) {
+    state.SkipWithError("no OpenCL device");
     return;
   }
+  const auto solver = make_root_field_solver(compute::ComputeBackend::open({compute::DeviceChoice::Kind::opencl}));
   run(state, *solver, state.range(0) != 0);
 }
 
 BENCHMARK(BM_RootField_Reference)->ArgName("every_end")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RootField_OpenCL)->ArgName("every_end")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-#endif
 
 }  // namespace

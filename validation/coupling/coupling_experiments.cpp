@@ -48,9 +48,10 @@ CoupledResult run_coupled(const CoupledExperiment& e) {
   light.sky_scale = e.sky_scale;
   light.cutoff_m = 1.0;  // near field within 1 m, far field (1 m voxels) beyond: a 12-year crown is ~3 m wide
   light.far_field_cell_m = 1.0;
-  auto solver = make_light_solver("reference", light);
+  const auto reference = compute::ComputeBackend::reference();
+  auto solver = make_light_solver(reference, light);
 
-  RootZone zone(settings_for(e), plot, e.seed, e.sky_scale);
+  RootZone zone(settings_for(e), plot, e.seed, e.sky_scale, reference);
   zone.establish(stand);
   stand.illuminate(*solver, *solver, e.sky_scale);
   zone.couple(stand);
