@@ -8,6 +8,7 @@
 
 #include <filesystem>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -26,8 +27,12 @@ std::optional<std::vector<double>> read_numbers(TomlTableReader& reader, std::st
   std::vector<double> values;
   for (std::size_t i = 0; i < array->size(); ++i) {
     const auto value = array->get(i)->value<double>();
-    if (!value || !range.contains(*value)) {
+    if (!value) {
       reader.problem(key, fmt::format("element {}: expected {}", i + 1, range.describe("a number")));
+      return std::nullopt;
+    }
+    if (!range.contains(*value)) {
+      reader.problem(key, fmt::format("element {}: {}", i + 1, range.refusal("a number", *value, fmt::format("{}", *value))));
       return std::nullopt;
     }
     values.push_back(*value);
@@ -40,7 +45,7 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
   if (!node) return;
   const NumberRange level = between(0.0, 1.0);
   if (auto value = node->value<double>(); value && !node->is_boolean()) {
-    if (!level.contains(*value)) reader.problem(key, fmt::format("expected {}, got {:g}", level.describe("a number"), *value));
+    if (!level.contains(*value)) reader.problem(key, level.refusal("a number", *value, fmt::format("{}", *value)));
     setting.kind = SoilFieldSetting::Kind::uniform;
     setting.value = *value;
     return;
@@ -65,7 +70,7 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
     if (auto v = field.number("max_face", level, true)) setting.at_max = *v;
   } else {
     setting.kind = SoilFieldSetting::Kind::layers;
-    auto bottoms = read_numbers(field, "layer_bottoms_m", positive());
+    auto bottoms = read_numbers(field, "layer_bottoms_m", positive_up_to(limit::soil_depth_m));
     auto values = read_numbers(field, "values", level);
     if (!table->contains("layer_bottoms_m") || !table->contains("values")) {
       reader.problem(key, "an inline table needs either gradient/min_face/max_face or layer_bottoms_m/values");
@@ -93,7 +98,7 @@ void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& 
   TomlTableReader reader(*table, "soil", problems);
   SoilSettings& soil = draft.scenario.roots.soil;
   if (auto v = reader.number("spacing_m", between(0.05, 5.0))) soil.spacing_m = *v;
-  if (auto v = reader.number("depth_m", {0.0, 50.0, true, false})) soil.depth_m = *v;
+  if (auto v = reader.number("depth_m", positive_up_to(limit::soil_depth_m))) soil.depth_m = *v;
   read_field(reader, "moisture", soil.moisture);
   read_field(reader, "nutrient", soil.nutrient);
   if (auto file = reader.string("file")) {
