@@ -89,10 +89,29 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
   field.report_unknown_keys();
 }
 
+// The soil grid is allocated whole: a wide plot with the default spacing (no [soil] table) must be refused as surely
+// as one with a [soil] table (a 10,000 km plot asked for 2.4e9 voxels and died of std::bad_alloc, or of the OOM
+// killer). `line` 0 when there is no table.
+constexpr double max_soil_voxels = 5e7;
+
+void check_soil_size(const ScenarioDraft& draft, int line, ScenarioProblems& problems) {
+  const auto& roots = draft.scenario.roots;
+  if (!draft.plot_valid || !roots.enabled) return;  // no roots: no soil grid
+  const auto& plot = draft.scenario.stand.plot;
+  const SoilSettings& soil = roots.soil;
+  const double cells = std::ceil(plot.width_m() / soil.spacing_m) * std::ceil(plot.depth_m() / soil.spacing_m) *
+                       std::ceil(soil.depth_m / soil.spacing_m);
+  if (cells > max_soil_voxels)
+    problems.add(line, "soil.spacing_m",
+                 fmt::format("{:.3g} voxels of {:g} m under the {:g} m x {:g} m plot: too many (at most {:g}); use a "
+                             "coarser spacing, or [roots] enabled = false",
+                             cells, soil.spacing_m, plot.width_m(), plot.depth_m(), max_soil_voxels));
+}
+
 }  // namespace
 
 void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
-  if (!node) return;
+  if (!node) return check_soil_size(draft, 0, problems);
   const toml::table* table = as_table(node, "soil", problems);
   if (!table) return;
   TomlTableReader reader(*table, "soil", problems);
@@ -113,12 +132,7 @@ void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& 
   if (auto v = reader.number("moisture_recharge", between(0.0, 1.0))) soil.recharge.moisture_rate = *v;
   if (auto v = reader.number("nutrient_recharge", between(0.0, 1.0))) soil.recharge.nutrient_rate = *v;
   reader.report_unknown_keys();
-  if (draft.plot_valid) {
-    const auto& plot = draft.scenario.stand.plot;
-    const double cells = std::ceil(plot.width_m() / soil.spacing_m) * std::ceil(plot.depth_m() / soil.spacing_m) *
-                         std::ceil(soil.depth_m / soil.spacing_m);
-    if (cells > 5e7) reader.problem("spacing_m", fmt::format("{:.3g} voxels under the plot: too many (at most 5e7); use a coarser spacing", cells));
-  }
+  check_soil_size(draft, reader.line_of("spacing_m"), problems);
 }
 
 }  // namespace heliostand::scenario_detail

@@ -75,10 +75,11 @@ std::span<const ParameterField<S>> fields() { return species_fields; }
 // Relations between fields that single ranges cannot express.
 void check_consistency(TomlTableReader& reader, const SpeciesParameters& species) {
   const double branches_per_whorl = species.whorl_a3 * species.crown_shape_ratio + species.whorl_b3;
-  if (branches_per_whorl < 1.0) {
+  if (branches_per_whorl < 1.0 || branches_per_whorl > limit::branches_per_whorl.max) {
     reader.problems().add(reader.line(), reader.key_path("whorl_b3"),
-                          fmt::format("first-order branches per whorl a3 x + b3 = {:g} (eq. 3) must be at least 1",
-                                      branches_per_whorl));
+                          fmt::format("first-order branches per whorl a3 x + b3 = {:g} (eq. 3) must be in [1, {:g}] "
+                                      "({})",
+                                      branches_per_whorl, limit::branches_per_whorl.max, limit::branches_per_whorl.why));
   }
   if (species.leaf_ball_max_radius_m < species.leaf_ball_min_radius_m) {
     reader.problem("leaf_ball_max_radius_m", fmt::format("must not be below leaf_ball_min_radius_m ({:g}), got {:g}",

@@ -120,7 +120,8 @@ TEST(ScenarioErrors, SpeciesConsistencyAndDefaultSpecies) {
                                          "leaf_ball_min_radius_m = 0.5\n"
                                          "leaf_ball_max_radius_m = 0.2\n"),
               ElementsAre("scenario.toml:12: key 'species.todomatsu.whorl_b3': first-order branches per whorl a3 x + "
-                          "b3 = -2.248 (eq. 3) must be at least 1",
+                          "b3 = -2.248 (eq. 3) must be in [1, 20] (conifers carry 3-8 first-order branches per whorl; three "
+                          "trees took 15 s at 20 per whorl and 263 s at 103)",
                           "scenario.toml:15: key 'species.todomatsu.leaf_ball_max_radius_m': must not be below "
                           "leaf_ball_min_radius_m (0.5), got 0.2",
                           "scenario.toml:9: key 'stand.default_species': \"ezomatsu\" is not a defined species "

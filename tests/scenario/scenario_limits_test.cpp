@@ -131,5 +131,54 @@ TEST(ScenarioLimits, EveryNumericKeyHasALimitCase) {
   EXPECT_TRUE(with_case.count("soil.moisture") && with_case.count("soil.nutrient"));
 }
 
+// Rules of what the model can grow that relate keys to each other or to the survey (check_model_limits.cpp).
+
+TEST(ScenarioLimits, EqNineBranchTriangleMustStayOpenAtTheOldestAgeTheRunReaches) {
+  // theta = 20° t^beta with d0 = 60°: beta 0.6 closes the triangle at age 21 (124° + 60°); 0.5 leaves it open.
+  const std::string stand = testing::stand_table() + testing::default_run;
+  EXPECT_THAT(testing::scenario_problems("closure", stand + "[species.todomatsu]\ncrown_angle_beta = 0.6\n",
+                                         testing::limits_survey),
+              ::testing::ElementsAre(HasSubstr("scenario.toml:11: key 'species.todomatsu.crown_angle_beta': at tree "
+                                               "age 21 the crown angle 20 x 21^0.6 = 124.3° and "
+                                               "initial_branch_angle_deg 60° leave eq. 9's branch triangle -4.269° "
+                                               "open, less than 5°")));
+  Scenario scenario = load_scenario(testing::write_scenario(
+      "closure_years", stand + "[species.todomatsu]\ncrown_angle_beta = 0.5\n", testing::limits_survey));
+  // --years 40 ends at age 60: 20° x 60^0.5 = 155° + 60° closes it.
+  EXPECT_THAT(testing::input_problems([&] { scenario.set_years(40); }),
+              ::testing::ElementsAre(HasSubstr("key 'run.years': --years 40: species todomatsu: at tree age 60")));
+  EXPECT_EQ(scenario.run.years, 1);
+  scenario.set_years(10);
+  EXPECT_EQ(scenario.run.years, 10);
+}
+
+TEST(ScenarioLimits, SurveyedTreesOlderThanTheModelCanGrowAreRefused) {
+  const std::string survey = "id,x,y,height,dbh,age\n1,2,2,9,12,100\n2,7,7,9,12,101\n";
+  EXPECT_THAT(testing::scenario_problems("old_tree", testing::stand_table() + testing::default_run, survey),
+              ::testing::ElementsAre("survey.csv:3: column 'age': 101 years is beyond the 100 years the model can "
+                                     "grow a tree to (" + std::string(limit::grown_tree_age.why) + ")"));
+}
+
+TEST(ScenarioLimits, TheSoilGridIsBoundedWithoutASoilTable) {
+  const std::string wide = testing::stand_table("x_max", "x_max = 1e6\n") + testing::default_run;
+  EXPECT_THAT(testing::scenario_problems("wide_plot", wide, testing::limits_survey),
+              ::testing::ElementsAre(HasSubstr("scenario.toml: key 'soil.spacing_m': 2.4e+08 voxels of 0.5 m under "
+                                               "the 1e+06 m x 10 m plot: too many (at most 5e+07)")));
+  // Without roots there is no soil grid to bound.
+  EXPECT_NO_THROW(load_scenario(
+      testing::write_scenario("wide_plot_no_roots", wide + "[roots]\nenabled = false\n", testing::limits_survey)));
+}
+
+TEST(ScenarioLimits, BranchesPerWhorlAreBounded) {
+  // a3 x + b3 with x = 0.38: a3 = 61 gives 20.0, a3 = 62 gives 20.4.
+  const std::string stand = testing::stand_table() + testing::default_run;
+  EXPECT_NO_THROW(load_scenario(testing::write_scenario("whorl_20", stand + "[species.todomatsu]\nwhorl_a3 = 61\n",
+                                                        testing::limits_survey)));
+  EXPECT_THAT(testing::scenario_problems("whorl_21", stand + "[species.todomatsu]\nwhorl_a3 = 62\n",
+                                         testing::limits_survey),
+              ::testing::ElementsAre(HasSubstr("key 'species.todomatsu.whorl_b3': first-order branches per whorl a3 "
+                                               "x + b3 = 20.372 (eq. 3) must be in [1, 20]")));
+}
+
 }  // namespace
 }  // namespace heliostand
