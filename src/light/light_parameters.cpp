@@ -14,10 +14,10 @@ void require(bool ok, const char* field, const std::string& reason) {
 }  // namespace
 
 void validate(const LightParameters& p) {
-  require(p.sky_bands >= 2 && p.sky_bands <= 64 && p.sky_bands % 2 == 0, "sky_bands",
-          "expected an even number in 2..64, got " + std::to_string(p.sky_bands));
-  require(p.sky_sectors >= 1 && p.sky_sectors <= 128, "sky_sectors",
-          "expected a number in 1..128, got " + std::to_string(p.sky_sectors));
+  require(p.sky_bands >= 2 && p.sky_bands <= max_sky_bands && p.sky_bands % 2 == 0, "sky_bands",
+          "expected an even number in 2.." + std::to_string(max_sky_bands) + ", got " + std::to_string(p.sky_bands));
+  require(p.sky_sectors >= 1 && p.sky_sectors <= max_sky_sectors, "sky_sectors",
+          "expected a number in 1.." + std::to_string(max_sky_sectors) + ", got " + std::to_string(p.sky_sectors));
   require(p.intensity_ratio > 0, "intensity_ratio", "expected a number > 0");
   require(p.sky_scale > 0, "sky_scale", "expected a number > 0");
   require(p.transmittance > 0 && p.transmittance <= 1, "transmittance", "expected a number in (0, 1]");

@@ -5,6 +5,11 @@
 
 namespace heliostand {
 
+// The most sky bands and sectors validate() allows: the light kernels keep one value per patch of the sphere in
+// private (per work item) memory, log_b[bands x sectors], 32 KiB of floats at 64 x 128.
+constexpr int max_sky_bands = 64;
+constexpr int max_sky_sectors = 128;
+
 struct LightParameters {
   // The celestial sphere around each leaf ball: V latitude bands x H longitude sectors.
   int sky_bands = 16;          // V (upper hemisphere = first V/2 bands); even, 2..64

@@ -98,7 +98,11 @@ Scenario load_scenario(const std::filesystem::path& file) {
   for (const auto& entry : scenario_table_parsers()) entry.parse(root.get(entry.key), draft, problems);
 
   read_stand_survey(draft, problems);
-  if (draft.survey_label) attach_hollows_to_survey(draft, problems);
+  if (draft.survey_label) {
+    attach_hollows_to_survey(draft, problems);
+    check_tree_ages(draft, problems);
+    if (draft.years_valid) check_crown_closure(draft, problems);
+  }
   if (draft.survey_label && draft.plot_valid) {
     check_thinning_against_survey(draft, problems);
   }
@@ -118,8 +122,15 @@ void Scenario::set_years(int years) {
                                       final_age, event.age_years)});
     }
   }
-  if (!problems.empty()) throw InputError(std::move(problems), "key");
+  const int before = run.years;
   run.years = years;
+  for (const auto& closure : scenario_detail::crown_closures(*this))
+    problems.push_back({label, 0, "run.years", fmt::format("--years {}: species {}: {}", years, closure.species,
+                                                          closure.reason(*this))});
+  if (!problems.empty()) {
+    run.years = before;
+    throw InputError(std::move(problems), "key");
+  }
 }
 
 }  // namespace heliostand

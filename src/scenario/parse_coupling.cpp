@@ -1,4 +1,5 @@
 // [coupling]: seed 003's crown–root balance coefficients (coupling/coupling_parameters.hpp).
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -11,9 +12,9 @@ void parse_coupling(const toml::node* node, ScenarioDraft& draft, ScenarioProble
   TomlTableReader reader(*table, "coupling", problems);
   CouplingParameters& p = draft.scenario.roots.coupling;
   if (auto v = reader.boolean("enabled")) p.enabled = *v;
-  if (auto v = reader.number("rho", positive())) p.rho = *v;
-  if (auto v = reader.number("tau", positive())) p.tau = *v;
-  if (auto v = reader.number("alpha_b", between(0.0, 1.0))) p.alpha_b = *v;
+  if (auto v = reader.number("rho", positive_up_to(limit::coupling_coefficient))) p.rho = *v;
+  if (auto v = reader.number("tau", positive_up_to(limit::coupling_coefficient))) p.tau = *v;
+  if (auto v = reader.number("alpha_b", between(0.0, 1.0))) p.alpha_b = *v;  // added to a probability
   if (auto v = reader.number("alpha_r", between(0.0, 10.0))) p.alpha_r = *v;
   reader.report_unknown_keys();
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -29,7 +30,8 @@ void read_sizes(TomlTableReader& reader, hollow::HollowSpec& spec) {
     const char* key;
     double hollow::HollowSpec::*field;
   };
-  // Lower bounds only: the upper ones depend on W and on the trunk, and validate() states them exactly.
+  // Lower bounds, and the thickest stem as a common upper one: the exact upper bounds depend on W and on the trunk,
+  // and validate() states them once the survey is read.
   static const Size sizes[] = {
       {"width_m", &hollow::HollowSpec::width_m},
       {"wound_height_m", &hollow::HollowSpec::wound_height_m},
@@ -40,8 +42,8 @@ void read_sizes(TomlTableReader& reader, hollow::HollowSpec& spec) {
       {"surface_tolerance_m", &hollow::HollowSpec::surface_tolerance_m},
   };
   for (const Size& size : sizes)
-    if (auto value = reader.number(size.key, positive())) spec.*size.field = *value;
-  if (auto bulge = reader.number("bulge_m", non_negative())) spec.bulge_m = *bulge;
+    if (auto value = reader.number(size.key, positive_up_to(limit::stem_width_m))) spec.*size.field = *value;
+  if (auto bulge = reader.number("bulge_m", non_negative_up_to(limit::stem_width_m))) spec.bulge_m = *bulge;
   if (auto corners = reader.integer("polygon_corners", between(4, 36))) spec.polygon_corners = static_cast<int>(*corners);
 }
 
@@ -63,8 +65,8 @@ void parse_one(const toml::table& table, const std::string& path, ScenarioDraft&
   const auto tree = read_tree_id(reader);
   entry.tree_line = reader.line_of("tree");
   TreeHollow& hollow = entry.hollow;
-  if (auto height = reader.number("height_m", non_negative(), true)) hollow.spec.height_m = *height;
-  if (auto azimuth = reader.number("azimuth_deg", any_number(), true)) hollow.spec.azimuth_deg = *azimuth;
+  if (auto height = reader.number("height_m", non_negative_up_to(limit::tree_height), true)) hollow.spec.height_m = *height;
+  if (auto azimuth = reader.number("azimuth_deg", between(-360.0, 360.0), true)) hollow.spec.azimuth_deg = *azimuth;
   read_sizes(reader, hollow.spec);
   read_placement(reader, hollow.spec);
   if (auto seed = reader.integer("seed", any_seed())) {

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "scenario/parameter_fields.hpp"
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 
 namespace heliostand::scenario_detail {
@@ -13,20 +14,20 @@ using L = LightParameters;
 
 // Every LightParameters field, with its allowed range.
 const std::array<ParameterField<L>, 14> light_fields{{
-    {"sky_bands", &L::sky_bands, between(2.0, 1024.0)},
-    {"sky_sectors", &L::sky_sectors, between(4.0, 4096.0)},
-    {"intensity_ratio", &L::intensity_ratio, positive()},
-    {"sky_scale", &L::sky_scale, positive()},
-    {"transmittance", &L::transmittance, between(0.0, 1.0)},
+    {"sky_bands", &L::sky_bands, from_up_to(2.0, limit::sky_bands)},
+    {"sky_sectors", &L::sky_sectors, from_up_to(4.0, limit::sky_sectors)},
+    {"intensity_ratio", &L::intensity_ratio, positive_up_to(limit::intensity_ratio)},
+    {"sky_scale", &L::sky_scale, positive_up_to(limit::sky_scale)},
+    {"transmittance", &L::transmittance, {0.0, 1.0, true, false}},  // (0, 1]: log(t) per occluder needs t > 0
     {"ground_albedo", &L::ground_albedo, between(0.0, 1.0)},
     {"exact", &L::exact},
-    {"cutoff_m", &L::cutoff_m, positive()},
-    {"far_field_cell_m", &L::far_field_cell_m, positive()},
+    {"cutoff_m", &L::cutoff_m, positive_up_to(limit::light_distance_m)},
+    {"far_field_cell_m", &L::far_field_cell_m, positive_up_to(limit::light_distance_m)},
     {"periodic", &L::periodic},
-    {"plot_x_min", &L::plot_x_min, any_number()},
-    {"plot_y_min", &L::plot_y_min, any_number()},
-    {"plot_x_max", &L::plot_x_max, any_number()},
-    {"plot_y_max", &L::plot_y_max, any_number()},
+    {"plot_x_min", &L::plot_x_min, magnitude_up_to(limit::coordinate_m)},
+    {"plot_y_min", &L::plot_y_min, magnitude_up_to(limit::coordinate_m)},
+    {"plot_x_max", &L::plot_x_max, magnitude_up_to(limit::coordinate_m)},
+    {"plot_y_max", &L::plot_y_max, magnitude_up_to(limit::coordinate_m)},
 }};
 
 }  // namespace

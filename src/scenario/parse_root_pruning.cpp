@@ -1,6 +1,7 @@
 // [[root_pruning]]: cut roots by path and depth, once at a stand age or every year (seed 003 Fig. 14).
 #include <fmt/format.h>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -12,7 +13,7 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
   TomlTableReader reader(table, path, problems);
   RootPruningEvent event;
   event.line = reader.line();
-  if (auto age = reader.integer("age", at_least(1))) {
+  if (auto age = reader.integer("age", from_up_to(1, limit::tree_lifetime))) {
     event.stand_age = static_cast<int>(*age);
     const int survey_age = draft.scenario.stand.age_at_survey_years;
     if (draft.age_valid && (*age <= survey_age || (draft.years_valid && *age > survey_age + draft.scenario.run.years)))
@@ -37,8 +38,8 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
       }
     }
   }
-  if (auto v = reader.number("min_depth_m", non_negative())) event.min_depth_m = *v;
-  if (auto v = reader.number("min_distance_m", non_negative())) event.min_distance_m = *v;
+  if (auto v = reader.number("min_depth_m", non_negative_up_to(limit::soil_depth_m))) event.min_depth_m = *v;
+  if (auto v = reader.number("min_distance_m", non_negative_up_to(limit::root_reach_m))) event.min_distance_m = *v;
   if (const toml::node* node = reader.node("trees")) {
     const toml::array* array = node->as_array();
     if (!array) {

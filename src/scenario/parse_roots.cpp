@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "roots/root_type.hpp"
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -24,18 +25,19 @@ void read_angle_range(TomlTableReader& reader, std::string_view stem, roots::Ang
 
 void read_type(TomlTableReader& reader, roots::RootTypeParameters& p) {
   for (roots::RootType child : roots::all_root_types) {
-    if (auto v = reader.number(fmt::format("branching_to_{}", roots::name_of(child)), non_negative()))
+    const auto& most = child == roots::RootType::main ? limit::main_root_forks : limit::roots_per_year;
+    if (auto v = reader.number(fmt::format("branching_to_{}", roots::name_of(child)), non_negative_up_to(most)))
       p.branching_frequency[roots::index_of(child)] = *v;
   }
   read_angle_range(reader, "branching_angle", p.branching_angle_deg);
   read_angle_range(reader, "continuation_angle", p.continuation_angle_deg);
-  if (auto v = reader.number("elongation_m_per_year", positive())) p.elongation_m_per_year = *v;
-  if (auto v = reader.number("radius_m", positive())) p.radius_m = *v;
-  if (auto v = reader.number("lifespan_years", positive())) p.lifespan_years = *v;
-  if (auto v = reader.number("growth_years", positive())) p.growth_years = *v;
-  if (auto v = reader.number("fine_root_sprouting_per_year", non_negative())) p.fine_root_sprouting_per_year = *v;
-  if (auto v = reader.number("perception_radius_m", positive())) p.perception_radius_m = *v;
-  if (auto v = reader.number("absorptive_weight", non_negative())) p.absorptive_weight = *v;
+  if (auto v = reader.number("elongation_m_per_year", positive_up_to(limit::annual_growth_m))) p.elongation_m_per_year = *v;
+  if (auto v = reader.number("radius_m", positive_up_to(limit::stem_radius_m))) p.radius_m = *v;
+  if (auto v = reader.number("lifespan_years", positive_up_to(limit::tree_lifetime))) p.lifespan_years = *v;
+  if (auto v = reader.number("growth_years", positive_up_to(limit::tree_lifetime))) p.growth_years = *v;
+  if (auto v = reader.number("fine_root_sprouting_per_year", non_negative_up_to(limit::roots_per_year))) p.fine_root_sprouting_per_year = *v;
+  if (auto v = reader.number("perception_radius_m", positive_up_to(limit::root_perception_m))) p.perception_radius_m = *v;
+  if (auto v = reader.number("absorptive_weight", between(0.0, 1.0))) p.absorptive_weight = *v;  // of a fine root
   roots::TropismWeights& w = p.tropisms;
   const roots::TropismWeights before = w;
   const bool any_weight = reader.table().contains("alpha") || reader.table().contains("beta") ||
@@ -57,11 +59,11 @@ void read_species(TomlTableReader& reader, roots::RootParameters& p) {
     p.moisture_probes = static_cast<int>(*v);
     if (p.moisture_probes % 2 != 0) reader.problem("moisture_probes", fmt::format("must be even (probes are cast in opposite pairs), got {}", *v));
   }
-  if (auto v = reader.number("uptake_decay_years", positive())) p.uptake_decay_years = *v;
-  if (auto v = reader.number("uptake_rate_per_m", non_negative())) p.uptake_rate_per_m = *v;
-  if (auto v = reader.integer("max_woody_order", at_least(1))) p.max_woody_order = static_cast<int>(*v);
-  if (auto v = reader.integer("max_segments", at_least(1))) p.max_segments = static_cast<int>(*v);
-  if (auto v = reader.number("min_depth_m", non_negative())) p.min_depth_m = *v;
+  if (auto v = reader.number("uptake_decay_years", positive_up_to(limit::tree_lifetime))) p.uptake_decay_years = *v;
+  if (auto v = reader.number("uptake_rate_per_m", non_negative_up_to(limit::uptake_rate_per_m))) p.uptake_rate_per_m = *v;
+  if (auto v = reader.integer("max_woody_order", from_up_to(1, limit::woody_root_order))) p.max_woody_order = static_cast<int>(*v);
+  if (auto v = reader.integer("max_segments", from_up_to(1, limit::root_segments))) p.max_segments = static_cast<int>(*v);
+  if (auto v = reader.number("min_depth_m", non_negative_up_to(limit::soil_depth_m))) p.min_depth_m = *v;
   for (roots::RootType type : roots::all_root_types) {
     const std::string name(roots::name_of(type));
     const toml::node* node = reader.node(name);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -17,12 +18,12 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
   TomlTableReader reader(*table, "run", problems);
   RunSettings& run = draft.scenario.run;
 
-  if (auto years = reader.integer("years", at_least(1), true)) {
+  if (auto years = reader.integer("years", from_up_to(1, limit::tree_lifetime), true)) {
     run.years = static_cast<int>(*years);
     draft.years_valid = true;
   }
   if (auto seed = reader.integer("seed", any_seed())) run.seed = static_cast<std::uint64_t>(*seed);
-  if (auto interval = reader.integer("output_interval", at_least(1))) run.output_interval_years = static_cast<int>(*interval);
+  if (auto interval = reader.integer("output_interval", from_up_to(1, limit::tree_lifetime))) run.output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {
     try {
       run.device = compute::DeviceChoice::parse(*device);

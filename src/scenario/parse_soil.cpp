@@ -8,6 +8,7 @@
 
 #include <filesystem>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -26,8 +27,12 @@ std::optional<std::vector<double>> read_numbers(TomlTableReader& reader, std::st
   std::vector<double> values;
   for (std::size_t i = 0; i < array->size(); ++i) {
     const auto value = array->get(i)->value<double>();
-    if (!value || !range.contains(*value)) {
+    if (!value) {
       reader.problem(key, fmt::format("element {}: expected {}", i + 1, range.describe("a number")));
+      return std::nullopt;
+    }
+    if (!range.contains(*value)) {
+      reader.problem(key, fmt::format("element {}: {}", i + 1, range.refusal("a number", *value, fmt::format("{}", *value))));
       return std::nullopt;
     }
     values.push_back(*value);
@@ -40,7 +45,7 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
   if (!node) return;
   const NumberRange level = between(0.0, 1.0);
   if (auto value = node->value<double>(); value && !node->is_boolean()) {
-    if (!level.contains(*value)) reader.problem(key, fmt::format("expected {}, got {:g}", level.describe("a number"), *value));
+    if (!level.contains(*value)) reader.problem(key, level.refusal("a number", *value, fmt::format("{}", *value)));
     setting.kind = SoilFieldSetting::Kind::uniform;
     setting.value = *value;
     return;
@@ -65,7 +70,7 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
     if (auto v = field.number("max_face", level, true)) setting.at_max = *v;
   } else {
     setting.kind = SoilFieldSetting::Kind::layers;
-    auto bottoms = read_numbers(field, "layer_bottoms_m", positive());
+    auto bottoms = read_numbers(field, "layer_bottoms_m", positive_up_to(limit::soil_depth_m));
     auto values = read_numbers(field, "values", level);
     if (!table->contains("layer_bottoms_m") || !table->contains("values")) {
       reader.problem(key, "an inline table needs either gradient/min_face/max_face or layer_bottoms_m/values");
@@ -84,16 +89,35 @@ void read_field(TomlTableReader& reader, std::string_view key, SoilFieldSetting&
   field.report_unknown_keys();
 }
 
+// The soil grid is allocated whole: a wide plot with the default spacing (no [soil] table) must be refused as surely
+// as one with a [soil] table (a 10,000 km plot asked for 2.4e9 voxels and died of std::bad_alloc, or of the OOM
+// killer). `line` 0 when there is no table.
+constexpr double max_soil_voxels = 5e7;
+
+void check_soil_size(const ScenarioDraft& draft, int line, ScenarioProblems& problems) {
+  const auto& roots = draft.scenario.roots;
+  if (!draft.plot_valid || !roots.enabled) return;  // no roots: no soil grid
+  const auto& plot = draft.scenario.stand.plot;
+  const SoilSettings& soil = roots.soil;
+  const double cells = std::ceil(plot.width_m() / soil.spacing_m) * std::ceil(plot.depth_m() / soil.spacing_m) *
+                       std::ceil(soil.depth_m / soil.spacing_m);
+  if (cells > max_soil_voxels)
+    problems.add(line, "soil.spacing_m",
+                 fmt::format("{:.3g} voxels of {:g} m under the {:g} m x {:g} m plot: too many (at most {:g}); use a "
+                             "coarser spacing, or [roots] enabled = false",
+                             cells, soil.spacing_m, plot.width_m(), plot.depth_m(), max_soil_voxels));
+}
+
 }  // namespace
 
 void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
-  if (!node) return;
+  if (!node) return check_soil_size(draft, 0, problems);
   const toml::table* table = as_table(node, "soil", problems);
   if (!table) return;
   TomlTableReader reader(*table, "soil", problems);
   SoilSettings& soil = draft.scenario.roots.soil;
   if (auto v = reader.number("spacing_m", between(0.05, 5.0))) soil.spacing_m = *v;
-  if (auto v = reader.number("depth_m", {0.0, 50.0, true, false})) soil.depth_m = *v;
+  if (auto v = reader.number("depth_m", positive_up_to(limit::soil_depth_m))) soil.depth_m = *v;
   read_field(reader, "moisture", soil.moisture);
   read_field(reader, "nutrient", soil.nutrient);
   if (auto file = reader.string("file")) {
@@ -108,12 +132,7 @@ void parse_soil(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& 
   if (auto v = reader.number("moisture_recharge", between(0.0, 1.0))) soil.recharge.moisture_rate = *v;
   if (auto v = reader.number("nutrient_recharge", between(0.0, 1.0))) soil.recharge.nutrient_rate = *v;
   reader.report_unknown_keys();
-  if (draft.plot_valid) {
-    const auto& plot = draft.scenario.stand.plot;
-    const double cells = std::ceil(plot.width_m() / soil.spacing_m) * std::ceil(plot.depth_m() / soil.spacing_m) *
-                         std::ceil(soil.depth_m / soil.spacing_m);
-    if (cells > 5e7) reader.problem("spacing_m", fmt::format("{:.3g} voxels under the plot: too many (at most 5e7); use a coarser spacing", cells));
-  }
+  check_soil_size(draft, reader.line_of("spacing_m"), problems);
 }
 
 }  // namespace heliostand::scenario_detail

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 #include "survey/plausible_limits.hpp"
@@ -122,15 +123,15 @@ void parse_stand(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
       }
     }
   }
-  if (auto age = reader.integer("age_at_survey", between(1, max_tree_age_years), true)) {
+  if (auto age = reader.integer("age_at_survey", from_up_to(1, limit::grown_tree_age), true)) {
     stand.age_at_survey_years = static_cast<int>(*age);
     draft.age_valid = true;
   }
 
   parse_survey_format(reader, stand.survey_format);
-  const auto margin = reader.number("plot_margin_m", between(0.0, 1e4));
+  const auto margin = reader.number("plot_margin_m", non_negative_up_to(limit::plot_margin_m));
   const bool from_survey = margin.has_value();
-  const NumberRange coordinate = between(-max_coordinate_m, max_coordinate_m);
+  const NumberRange coordinate = magnitude_up_to(limit::coordinate_m);
   const auto x_min = reader.number("x_min", coordinate, !from_survey);
   const auto y_min = reader.number("y_min", coordinate, !from_survey);
   const auto x_max = reader.number("x_max", coordinate, !from_survey);

@@ -7,6 +7,7 @@
 #include <array>
 #include <string_view>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 #include "scenario/toml_table_reader.hpp"
 
@@ -117,24 +118,24 @@ std::vector<std::string> read_ids(TomlTableReader& reader) {
 constexpr NumberRange fraction{0.0, 1.0, true, false};  // (0, 1]
 
 void read_size_targets(TomlTableReader& reader, ThinningEvent& event) {
-  event.target_stems_per_ha = reader.number("target_stems_per_ha", positive());
-  event.target_basal_area_m2_per_ha = reader.number("target_basal_area_m2_per_ha", positive());
+  event.target_stems_per_ha = reader.number("target_stems_per_ha", positive_up_to(limit::stems_per_ha));
+  event.target_basal_area_m2_per_ha = reader.number("target_basal_area_m2_per_ha", positive_up_to(limit::basal_area_m2_per_ha));
   event.remove_fraction = reader.number("remove_fraction", fraction);
   event.remove_basal_area_fraction = reader.number("remove_basal_area_fraction", fraction);
 }
 
 void read_crop_tree_keys(TomlTableReader& reader, const ScenarioDraft& draft, CropTreeSettings& crop_trees) {
-  if (auto n = reader.number("crop_trees_per_ha", positive())) crop_trees.crop_trees_per_ha = *n;
-  if (auto spacing = reader.number("crop_tree_spacing_m", non_negative())) crop_trees.spacing_m = *spacing;
-  crop_trees.competitor_radius_m = reader.number("competitor_radius_m", positive())
+  if (auto n = reader.number("crop_trees_per_ha", positive_up_to(limit::stems_per_ha))) crop_trees.crop_trees_per_ha = *n;
+  if (auto spacing = reader.number("crop_tree_spacing_m", non_negative_up_to(limit::neighbourhood_m))) crop_trees.spacing_m = *spacing;
+  crop_trees.competitor_radius_m = reader.number("competitor_radius_m", positive_up_to(limit::neighbourhood_m))
                                        .value_or(draft.scenario.competition.hegyi_radius_m);
-  if (auto n = reader.integer("competitors_per_crop_tree", at_least(1)))
+  if (auto n = reader.integer("competitors_per_crop_tree", from_up_to(1, limit::competitors)))
     crop_trees.competitors_per_crop_tree = static_cast<int>(*n);
 }
 
 void read_dbh_class_keys(TomlTableReader& reader, DbhClass& dbh_class) {
-  const auto min = reader.number("dbh_min_cm", non_negative());
-  const auto max = reader.number("dbh_max_cm", positive());
+  const auto min = reader.number("dbh_min_cm", non_negative_up_to(limit::dbh_cm));
+  const auto max = reader.number("dbh_max_cm", positive_up_to(limit::dbh_cm));
   if (min) dbh_class.min_cm = *min;
   if (max) dbh_class.max_cm = *max;
   if (min && max && *max <= *min)
@@ -142,10 +143,10 @@ void read_dbh_class_keys(TomlTableReader& reader, DbhClass& dbh_class) {
 }
 
 void read_row_keys(TomlTableReader& reader, RowSettings& rows) {
-  if (auto k = reader.integer("row_interval", at_least(2))) rows.interval = static_cast<int>(*k);
-  if (auto first = reader.integer("first_row", at_least(1))) rows.first_row = static_cast<int>(*first);
+  if (auto k = reader.integer("row_interval", from_up_to(2, limit::planting_rows))) rows.interval = static_cast<int>(*k);
+  if (auto first = reader.integer("first_row", from_up_to(1, limit::planting_rows))) rows.first_row = static_cast<int>(*first);
   rows.azimuth_deg = reader.number("row_azimuth_deg", NumberRange{0.0, 360.0, false, true});
-  if (auto tolerance = reader.number("row_tolerance_m", positive())) rows.tolerance_m = *tolerance;
+  if (auto tolerance = reader.number("row_tolerance_m", positive_up_to(limit::neighbourhood_m))) rows.tolerance_m = *tolerance;
 }
 
 void check_method_keys(TomlTableReader& reader, ThinningMethod method) {

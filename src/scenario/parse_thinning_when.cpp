@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
 
 namespace heliostand::scenario_detail {
@@ -34,7 +35,7 @@ void check_age(TomlTableReader& reader, const ScenarioDraft& draft, int age) {
 
 void read_repetition(TomlTableReader& reader, ThinningEvent& event) {
   const auto repeat = reader.boolean("repeat");
-  const auto every = reader.integer("repeat_every_years", at_least(1));
+  const auto every = reader.integer("repeat_every_years", from_up_to(1, limit::tree_lifetime));
   if (repeat == false && reader.table().contains("repeat_every_years")) {
     reader.problem("repeat_every_years", "not used with repeat = false (remove one of the two)");
   } else if (every) {
@@ -55,13 +56,13 @@ void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, Thi
                           "required key missing (or, instead of a fixed age, a condition: "
                           "when_basal_area_exceeds_m2_per_ha or when_top_height_reaches_m)");
 
-  if (auto age = reader.integer("age", at_least(1))) {
+  if (auto age = reader.integer("age", from_up_to(1, limit::tree_lifetime))) {
     event.age_years = static_cast<int>(*age);
     check_age(reader, draft, event.age_years);
   }
-  if (auto threshold = reader.number("when_basal_area_exceeds_m2_per_ha", positive()))
+  if (auto threshold = reader.number("when_basal_area_exceeds_m2_per_ha", positive_up_to(limit::basal_area_m2_per_ha)))
     event.condition = StandCondition{StandCondition::Measure::basal_area_m2_per_ha, *threshold};
-  if (auto threshold = reader.number("when_top_height_reaches_m", positive()))
+  if (auto threshold = reader.number("when_top_height_reaches_m", positive_up_to(limit::tree_height)))
     event.condition = StandCondition{StandCondition::Measure::top_height_m, *threshold};
   if (given.size() > 1)
     reader.problem(given[1], fmt::format("a thinning happens at an age or on one condition: give one of age, "

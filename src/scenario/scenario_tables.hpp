@@ -81,6 +81,18 @@ void attach_hollows_to_survey(ScenarioDraft& draft, ScenarioProblems& problems);
 // sorts the events by age.
 void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& problems);
 
+// After the survey is read: what the model can grow (check_model_limits.cpp). Every surveyed tree's age within
+// limit::grown_tree_age; eq. 9's branch triangle open by limit::min_branch_triangle_opening_deg at the oldest age each
+// species reaches (also after --years: Scenario::set_years).
+struct CrownClosure {
+  std::string species;
+  double age_years, crown_angle_deg, opening_deg;
+  std::string reason(const Scenario& scenario) const;
+};
+std::vector<CrownClosure> crown_closures(const Scenario& scenario);
+void check_crown_closure(const ScenarioDraft& draft, ScenarioProblems& problems);
+void check_tree_ages(const ScenarioDraft& draft, ScenarioProblems& problems);
+
 // In the order they run: later tables may use what earlier ones resolved (light uses the stand's plot).
 std::span<const TableParserEntry> scenario_table_parsers();
 

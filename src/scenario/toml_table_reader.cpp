@@ -9,8 +9,15 @@ namespace heliostand {
 
 bool NumberRange::contains(double value) const {
   if (min && (min_exclusive ? value <= *min : value < *min)) return false;
-  if (max && (max_exclusive ? value >= *max : value > *max)) return false;
-  return true;
+  return !above_max(value);
+}
+
+bool NumberRange::above_max(double value) const { return max && (max_exclusive ? value >= *max : value > *max); }
+
+std::string NumberRange::refusal(std::string_view what, double value, std::string_view value_text) const {
+  std::string text = fmt::format("expected {}, got {}", describe(what), value_text);
+  if (above_max(value) && !why.empty()) text += fmt::format(" ({})", why);
+  return text;
 }
 
 std::string NumberRange::describe(std::string_view what) const {
@@ -70,7 +77,9 @@ std::optional<double> TomlTableReader::number(std::string_view key, NumberRange 
     return std::nullopt;
   }
   if (!std::isfinite(*value) || !range.contains(*value)) {
-    problem(key, fmt::format("expected {}, got {:g}", range.describe(std::isfinite(*value) ? "a number" : "a finite number"), *value));
+    // "{}" writes the shortest text that reads back as the value: one just above a limit does not show as the limit.
+    const std::string_view what = std::isfinite(*value) ? "a number" : "a finite number";
+    problem(key, range.refusal(what, *value, fmt::format("{}", *value)));
     return std::nullopt;
   }
   if (std::abs(*value) > largest_scenario_number) {
@@ -91,7 +100,7 @@ std::optional<std::int64_t> TomlTableReader::integer(std::string_view key, Numbe
     return std::nullopt;
   }
   if (!range.contains(static_cast<double>(*value))) {
-    problem(key, fmt::format("expected {}, got {}", range.describe("an integer"), *value));
+    problem(key, range.refusal("an integer", static_cast<double>(*value), std::to_string(*value)));
     return std::nullopt;
   }
   if (range.overflow_guard && std::abs(*value) > largest_scenario_integer) {

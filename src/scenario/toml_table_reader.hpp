@@ -13,14 +13,19 @@
 
 namespace heliostand {
 
-// An allowed interval, e.g. {0, {}, true} = "> 0"; both ends optional.
+// An allowed interval, e.g. {0, {}, true} = "> 0"; both ends optional. Scenario keys give every number an upper
+// limit with its reason (scenario/scenario_limits.hpp); `why` is quoted when a value is above it.
 struct NumberRange {
   std::optional<double> min, max;
   bool min_exclusive = false, max_exclusive = false;
   bool overflow_guard = true;  // refuse magnitudes beyond largest_scenario_integer (not for seeds)
+  std::string_view why = {};   // the fact behind `max`
 
   bool contains(double value) const;
+  bool above_max(double value) const;
   std::string describe(std::string_view what) const;  // "a number > 0", "an integer in [1, 10]"
+  // "expected a number in (0, 130], got 131 (the tallest ...)": the reason only for a value above the limit.
+  std::string refusal(std::string_view what, double value, std::string_view value_text) const;
 };
 
 inline NumberRange positive() { return {0.0, std::nullopt, true, false}; }

@@ -10,9 +10,13 @@
 
 namespace heliostand {
 
-// Limits the scenario shares with the survey: a plot's corners and the stand age at the survey.
+// Limits the scenario shares with the survey (a plot's corners, the stand age, a site's asymptotic height, a
+// DBH class, ...): one fact, one constant. The sources are in plausible_limit()'s reasons.
 constexpr double max_coordinate_m = 1e7;     // UTM northings stay below 10,000 km
 constexpr double max_tree_age_years = 5000;  // the oldest known non-clonal tree is about 4,850 years old
+constexpr double max_tree_height_m = 130;    // the tallest measured tree, a coast redwood, is 116 m
+constexpr double max_dbh_cm = 1500;          // the thickest measured stems are about 11-12 m across
+constexpr double max_crown_radius_m = 30;    // the widest measured crowns are about 60 m across
 
 struct PlausibleLimit {
   double max;             // in the column's canonical unit; values above are errors

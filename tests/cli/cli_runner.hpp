@@ -15,8 +15,9 @@ struct CliResult {
   std::string output;  // stdout and stderr together
 };
 
-inline CliResult run_cli(const std::string& arguments) {
-  const std::string command = std::string(HELIOSTAND_EXECUTABLE) + " " + arguments + " 2>&1";
+// The shell reports a signal as exit 128 + its number (a crash: 134, 139, ...).
+inline CliResult run_command(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CliResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -25,6 +26,10 @@ inline CliResult run_cli(const std::string& arguments) {
   const int raw = ::pclose(pipe);
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return result;
+}
+
+inline CliResult run_cli(const std::string& arguments) {
+  return run_command(std::string(HELIOSTAND_EXECUTABLE) + " " + arguments);
 }
 
 inline std::filesystem::path source_path(const std::string& relative) {

@@ -83,7 +83,7 @@ TEST(RootsScenario, BadValuesNameLineAndKey) {
           "the roots on one backend",
           "scenario.toml:13: key 'roots.ezomatsu': no species \"ezomatsu\" (a [roots.SPECIES] table names a [species] "
           "table, or todomatsu when there is none)",
-          "scenario.toml:16: key 'roots.todomatsu.lateral.radius_m': expected a number > 0, got -1",
+          "scenario.toml:16: key 'roots.todomatsu.lateral.radius_m': expected a number in (0, 7.5], got -1",
           "scenario.toml:15: key 'roots.todomatsu.lateral.alpha': tropism weights alpha + beta + gamma + delta + "
           "epsilon must sum to 1 (seed 003), got 1.4 (give all five when changing one)",
           "scenario.toml:18: key 'soil.spacing_m': expected a number in [0.05, 5], got 0",

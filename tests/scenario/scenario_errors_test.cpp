@@ -65,7 +65,7 @@ TEST(ScenarioErrors, WrongTypes) {
                           "scenario.toml:12: key 'run.device': expected a string, got an integer",
                           "scenario.toml:17: key 'species.todomatsu': expected a table of species parameters "
                           "([species.NAME]), got an integer",
-                          "scenario.toml:15: key 'light.transmittance': expected a number in [0, 1], got a string",
+                          "scenario.toml:15: key 'light.transmittance': expected a number in (0, 1], got a string",
                           "scenario.toml:14: key 'light.exact': expected true or false, got a string"));
 }
 
@@ -87,13 +87,15 @@ TEST(ScenarioErrors, OutOfRangeValues) {
                                        "[light]\n"
                                        "sky_bands = 15\n"
                                        "cutoff_m = 0\n"),
-              ElementsAre("scenario.toml:10: key 'run.years': expected an integer >= 1, got -5",
-                          "scenario.toml:11: key 'run.output_interval': expected an integer >= 1, got 0",
-                          "scenario.toml:13: key 'species.todomatsu.height_m': expected a number in [0, 1), got 1",
+              ElementsAre("scenario.toml:10: key 'run.years': expected an integer in [1, 5000], got -5",
+                          "scenario.toml:11: key 'run.output_interval': expected an integer in [1, 5000], got 0",
+                          "scenario.toml:13: key 'species.todomatsu.height_m': expected a number in [0, 0.8], got 1 (eq. 1: "
+                          "p = 1/(1 - m) <= 5; fitted height curves have p of about 1-3, and beyond it the calibrated "
+                          "asymptote of a young tree runs to kilometres)",
                           "scenario.toml:14: key 'species.todomatsu.initial_crown_angle_deg': expected a number in "
                           "(0, 90), got 95",
                           "scenario.toml:15: key 'species.todomatsu.max_order': expected an integer in [1, 10], got 0",
-                          "scenario.toml:18: key 'light.cutoff_m': expected a number > 0, got 0",
+                          "scenario.toml:18: key 'light.cutoff_m': expected a number in (0, 1000], got 0",
                           "scenario.toml:17: key 'light.sky_bands': must be even (the upper hemisphere is the first "
                           "half), got 15"));
 }
@@ -104,7 +106,7 @@ TEST(ScenarioErrors, BadPlotBoundsAndSurveyPath) {
               // The path is shown as the scenario's folder (stripped here) joined with the key's value.
               ElementsAre("scenario.toml:2: key 'stand.survey': survey file \"nothere.csv\" not found (paths are "
                           "relative to the scenario file)",
-                          "scenario.toml:3: key 'stand.age_at_survey': expected an integer in [1, 5000], got 0",
+                          "scenario.toml:3: key 'stand.age_at_survey': expected an integer in [1, 100], got 0",
                           "scenario.toml:6: key 'stand.x_max': must be greater than x_min (5), got 5",
                           "scenario.toml:7: key 'stand.y_max': must be greater than y_min (0), got -1"));
 }
@@ -118,7 +120,8 @@ TEST(ScenarioErrors, SpeciesConsistencyAndDefaultSpecies) {
                                          "leaf_ball_min_radius_m = 0.5\n"
                                          "leaf_ball_max_radius_m = 0.2\n"),
               ElementsAre("scenario.toml:12: key 'species.todomatsu.whorl_b3': first-order branches per whorl a3 x + "
-                          "b3 = -2.248 (eq. 3) must be at least 1",
+                          "b3 = -2.248 (eq. 3) must be in [1, 20] (conifers carry 3-8 first-order branches per whorl; three "
+                          "trees took 15 s at 20 per whorl and 263 s at 103)",
                           "scenario.toml:15: key 'species.todomatsu.leaf_ball_max_radius_m': must not be below "
                           "leaf_ball_min_radius_m (0.5), got 0.2",
                           "scenario.toml:9: key 'stand.default_species': \"ezomatsu\" is not a defined species "
@@ -220,14 +223,14 @@ TEST(BadStands, EveryProblemOfTheBadKeysScenario) {
       input_problems([&] { load_scenario(file); }),
       ElementsAre(f + ":9: key 'stand.colour': unknown key (known keys here: age_at_survey, default_species, multi_stem, "
                       "plot_margin_m, survey, survey_separator, survey_units, x_max, x_min, y_max, y_min)",
-                  f + ":12: key 'run.years': expected an integer >= 1, got a string",
+                  f + ":12: key 'run.years': expected an integer in [1, 5000], got a string",
                   f + ":13: key 'run.seed': expected an integer >= 0, got -1",
-                  f + ":14: key 'run.output_interval': expected an integer >= 1, got 0",
+                  f + ":14: key 'run.output_interval': expected an integer in [1, 5000], got 0",
                   f + ":15: key 'run.device': expected \"auto\", \"reference\", \"opencl\" or \"opencl:N\", got \"gpu\"",
-                  f + ":18: key 'species.todomatsu.height_k': expected a number > 0, got -0.1",
+                  f + ":18: key 'species.todomatsu.height_k': expected a number in (0, 1], got -0.1",
                   f + ":19: key 'species.todomatsu.max_order': expected an integer in [1, 10], got a floating-point "
                       "number",
-                  f + ":22: key 'light.transmittance': expected a number in [0, 1], got 1.5",
+                  f + ":22: key 'light.transmittance': expected a number in (0, 1], got 1.5",
                   f + ":25: key 'thinning[1].age': thinning at age 18 is before the survey (stand age 20)",
                   f + ":27: key 'thinning[1].ids': tree id \"99\" is not in the survey",
                   f + ":32: key 'thinning[2].target_stems_per_ha': target 900 stems/ha is not below the stand's "

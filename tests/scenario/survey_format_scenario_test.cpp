@@ -77,14 +77,14 @@ TEST(SurveyFormatScenario, PlotBoundsOrAMarginNotBoth) {
 }
 
 TEST(SurveyFormatScenario, NumbersBeyondAnyQuantityOfTheModelAreRefused) {
-  // The overflow: a site asymptote of 1e308 m would grow a tree of 1e308 m.
+  // The overflow: a site asymptote of 1e308 m would grow a tree of 1e308 m. Each key's own limit refuses it
+  // (scenario/scenario_limits.hpp), before the blanket guard (largest_scenario_number) would.
   EXPECT_THAT(scenario_problems("huge_number", testing::minimal_stand + "\n[species.todomatsu]\nsite_asymptote_m = 1e308\n"),
-              ElementsAre("scenario.toml:13: key 'species.todomatsu.site_asymptote_m': 1e+308 is beyond 1e+07, larger "
-                          "than any quantity of the model in its unit (a slip, or a value that would overflow the "
-                          "growth equations)"));
+              ElementsAre("scenario.toml:13: key 'species.todomatsu.site_asymptote_m': expected a number in (0, 130], "
+                          "got 1e+308 (the tallest measured tree, a coast redwood, is 116 m)"));
   EXPECT_THAT(scenario_problems("huge_years", "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 20\nx_min = 0\n"
                                               "y_min = 0\nx_max = 10\ny_max = 10\n[run]\nyears = 2000000000\n"),
-              ElementsAre(HasSubstr("key 'run.years': 2000000000 is beyond 1000000")));
+              ElementsAre(HasSubstr("key 'run.years': expected an integer in [1, 5000], got 2000000000")));
   // A seed is any unsigned number.
   EXPECT_EQ(load_scenario(write_scenario("big_seed", testing::minimal_stand + "seed = 9000000000000000000\n")).run.seed,
             9000000000000000000u);

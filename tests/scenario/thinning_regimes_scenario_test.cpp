@@ -120,9 +120,9 @@ TEST(ThinningRegimesScenario, BadRegimeKeys) {
                                                    "age = 25\n"
                                                    "method = \"neutral\"\n"
                                                    "remove_fraction = 1.5\n"),        // 31
-              ElementsAre("scenario.toml:14: key 'thinning[1].row_interval': expected an integer >= 2, got 1",
-                          "scenario.toml:18: key 'thinning[2].competitors_per_crop_tree': expected an integer >= 1, "
-                          "got 0",
+              ElementsAre("scenario.toml:14: key 'thinning[1].row_interval': expected an integer in [2, 1000], got 1",
+                          "scenario.toml:18: key 'thinning[2].competitors_per_crop_tree': expected an integer in [1, "
+                          "1000], got 0",
                           "scenario.toml:15: key 'thinning[2].crop_trees_per_ha': required key missing (method "
                           "\"crop_tree\" needs how many crop trees per ha)",
                           "scenario.toml:15: key 'thinning[2].crop_tree_spacing_m': required key missing (method "
@@ -160,13 +160,13 @@ TEST(ThinningRegimesScenario, BadTriggerAndCompetitionKeys) {
                                                     "[competition]\n"
                                                     "hegyi_radius_m = 0\n"                      // 27
                                                     "radius = 3\n"),                            // 28
-              ElementsAre("scenario.toml:27: key 'competition.hegyi_radius_m': expected a number > 0, got 0",
+              ElementsAre("scenario.toml:27: key 'competition.hegyi_radius_m': expected a number in (0, 100], got 0",
                           "scenario.toml:28: key 'competition.radius': unknown key (known keys here: hegyi_radius_m)",
                           "scenario.toml:13: key 'thinning[1].when_top_height_reaches_m': a thinning happens at an age "
                           "or on one condition: give one of age, when_basal_area_exceeds_m2_per_ha and "
                           "when_top_height_reaches_m, got age and when_top_height_reaches_m",
                           "scenario.toml:17: key 'thinning[2].when_basal_area_exceeds_m2_per_ha': expected a number "
-                          "> 0, got 0",
+                          "in (0, 10000], got 0",
                           "scenario.toml:19: key 'thinning[2].repeat_every_years': not used with repeat = false "
                           "(remove one of the two)",
                           "scenario.toml:22: key 'thinning[3].age': required key missing (or, instead of a fixed age, "
