@@ -566,6 +566,11 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
   }
 }
 
+void ConiferTree::release_crown() {
+  std::vector<Shoot>().swap(shoots_);
+  std::vector<BranchAxis>().swap(axes_);
+}
+
 void ConiferTree::remove_shoot(int shoot_index) {
   if (shoot_index < 0 || shoot_index >= static_cast<int>(shoots_.size()))
     throw std::out_of_range("ConiferTree::remove_shoot: no shoot " + std::to_string(shoot_index));
