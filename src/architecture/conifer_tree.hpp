@@ -127,6 +127,7 @@ class ConiferTree {
   void droop_first_order_branches();
   void drop_dead_branches();
   void remove_flagged(std::vector<char> removed);
+  void fit_lists_to_size();
   void update_radii();
   double axis_length_m(const BranchAxis& axis) const;
 
