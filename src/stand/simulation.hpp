@@ -37,6 +37,7 @@ struct SimulationSummary {
   std::size_t leaf_balls = 0;     // one per foliage-carrying shoot tip (what the light solver sees)
   std::size_t shoots = 0;         // living and dead shoots still attached (the crowns as held in memory)
   std::size_t root_segments = 0;  // of their root systems
+  double light_candidates_per_ball = 0;  // near-field occluders per ball in the last light solve (its memory driver)
 };
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options);

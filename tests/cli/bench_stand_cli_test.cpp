@@ -75,6 +75,7 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_GT(json.at("leaf_balls_at_end").get<long>(), 8 * 10) << "every tree carries foliage";
   EXPECT_GE(json.at("shoots_at_end").get<long>(), json.at("leaf_balls_at_end").get<long>());
   EXPECT_GT(json.at("root_segments_at_end").get<long>(), 8);
+  EXPECT_GT(json.at("light_candidates_per_ball").get<double>(), 0.0);
   const double peak = json.at("peak_memory_bytes");
   EXPECT_GT(peak, 1 << 20);
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
