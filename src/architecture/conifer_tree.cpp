@@ -115,6 +115,7 @@ void ConiferTree::grow_year() {
   drop_dead_branches();
   grow_diameter(height_m_ - height_growth + potential_height_growth);
   update_radii();
+  fit_lists_to_size();
 }
 
 // The basal-area increment at breast height (docs/model.md "Growth from light"). Before any light field (a tree
@@ -424,7 +425,7 @@ void ConiferTree::remove_flagged(std::vector<char> removed) {
 
   std::vector<int> new_shoot_index(shoots_.size(), -1);
   std::vector<Shoot> kept;
-  kept.reserve(shoots_.size());
+  kept.reserve(static_cast<std::size_t>(std::count(removed.begin(), removed.end(), 0)));
   for (std::size_t i = 0; i < shoots_.size(); ++i) {
     if (removed[i]) continue;
     new_shoot_index[i] = static_cast<int>(kept.size());
@@ -451,6 +452,13 @@ void ConiferTree::remove_flagged(std::vector<char> removed) {
   }
   axes_ = std::move(kept_axes);
   for (Shoot& shoot : shoots_) shoot.axis = new_axis_index[shoot.axis];
+  fit_lists_to_size();
+}
+
+// A year's new shoots may have doubled the lists' capacity: up to half of a big crown's memory would hold nothing.
+void ConiferTree::fit_lists_to_size() {
+  shoots_.shrink_to_fit();
+  axes_.shrink_to_fit();
 }
 
 // Stem radii by eq. 2 for the current height and crown base; living branch radii by eq. 11 from the length to
@@ -564,6 +572,11 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
     if (static_cast<int>(i) != shoot_index) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);
     shoots_[i].tip = pivot + rotate(shoots_[i].tip - pivot, hinge, angle);
   }
+}
+
+void ConiferTree::release_crown() {
+  std::vector<Shoot>().swap(shoots_);
+  std::vector<BranchAxis>().swap(axes_);
 }
 
 void ConiferTree::remove_shoot(int shoot_index) {

@@ -100,6 +100,12 @@ class ConiferTree {
   int leader_shaded_years() const { return leader_shaded_years_; }
   void record_leader_light(bool shaded_out) { leader_shaded_years_ = shaded_out ? leader_shaded_years_ + 1 : 0; }
 
+  // A tree that has left the stand, once nothing will read its crown again, gives the crown back: its shoots and
+  // axes (most of a tree's memory) are dropped; age, height, DBH and stem base stay. Nothing may grow, light or
+  // measure the crown afterwards (crown base, crown radius and stem volume read it).
+  void release_crown();
+  bool crown_released() const { return axes_.empty(); }  // a tree always has its stem axis until then
+
   // Crown–root coupling (seed 003's Branch_n, src/coupling/): bonus[n] is added to the flushing probability
   // (clamped to 0..1) of every lateral bud on a branch whose first-order axis leaves the trunk in path n
   // (45° sector of its azimuth, counter-clockwise from +x). A bud whose own probability is 0 stays off.
@@ -121,6 +127,7 @@ class ConiferTree {
   void droop_first_order_branches();
   void drop_dead_branches();
   void remove_flagged(std::vector<char> removed);
+  void fit_lists_to_size();
   void update_radii();
   double axis_length_m(const BranchAxis& axis) const;
 

@@ -8,13 +8,58 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "cli/commands.hpp"
+#include "compute/device_choice.hpp"
 #include "light/light_benchmark.hpp"
+#include "stand/stand_benchmark.hpp"
 
 namespace heliostand::cli {
+namespace {
+
+void print_json(const std::string& json, const std::string& output) {
+  std::cout << json;
+  if (output.empty()) return;
+  std::ofstream out(output);
+  if (!(out << json)) throw std::runtime_error("cannot write " + output);
+}
+
+std::string check_device(const std::string& text) {
+  try {
+    compute::DeviceChoice::parse(text);
+    return std::string();
+  } catch (const std::invalid_argument& e) {
+    return std::string(e.what());
+  }
+}
+
+// `heliostand bench stand SCENARIO`: the scenario grown as `grow --no-vtk` grows it, timed (stand/stand_benchmark.hpp).
+void add_bench_stand_command(CLI::App& bench) {
+  auto options = std::make_shared<StandBenchmarkOptions>();
+  auto output = std::make_shared<std::string>();
+  auto* stand = bench.add_subcommand(
+      "stand", "Grow a scenario without the VTK series and report seconds per stage, tree-years/s and peak memory");
+  stand->add_option("scenario", options->scenario, "Scenario TOML file")->required();
+  stand->add_option("--years", options->years, "Years to simulate (overrides run.years)")->check(CLI::PositiveNumber);
+  stand->add_option("--seed", options->seed, "Random seed (overrides run.seed)");
+  stand->add_option("--device", options->device, "auto | reference | opencl | opencl:N (overrides run.device)")
+      ->check(check_device);
+  stand->add_option("--tables", options->tables_folder,
+                    "Keep the run's tables (stand_table.csv, trees.csv, events.csv, run.json) in this folder "
+                    "(default: a temporary folder, removed)");
+  stand->add_flag("-f,--force", options->force, "Replace the contents of a non-empty --tables folder");
+  stand->add_option("-o,--output", *output, "Also write the JSON to this file");
+  stand->callback([options, output] {
+    options->command_line = invoked_command_line();
+    print_json(run_stand_benchmark(*options), *output);
+  });
+}
+
+}  // namespace
 
 void add_bench_command(CLI::App& app) {
   auto* bench = app.add_subcommand("bench", "Benchmarks (timings and accuracy, printed as JSON)");
   bench->require_subcommand(1);
+  add_bench_stand_command(*bench);
   auto options = std::make_shared<LightBenchmarkOptions>();
   auto output = std::make_shared<std::string>();
   auto* light = bench->add_subcommand("light", "Light solvers side by side on synthetic conifer canopies");
@@ -47,12 +92,7 @@ void add_bench_command(CLI::App& app) {
   light->callback([options, output] {
     // stdout carries the JSON: progress lines go to stderr (DESIGN.md: logs on stderr)
     if (!spdlog::get("heliostand-bench")) spdlog::set_default_logger(spdlog::stderr_color_mt("heliostand-bench"));
-    const std::string json = run_light_benchmark(*options);
-    std::cout << json;
-    if (!output->empty()) {
-      std::ofstream out(*output);
-      if (!(out << json)) throw std::runtime_error("cannot write " + *output);
-    }
+    print_json(run_light_benchmark(*options), *output);
   });
 }
 

@@ -142,15 +142,19 @@ int RootSystem::finish_year(int year) {
 void RootSystem::remove_dead_and_compact() {
   // Parents always precede their children, so one forward pass carries death down every subtree.
   std::vector<int> new_index(segments_.size(), -1);
-  std::vector<RootSegment> kept;
-  kept.reserve(segments_.size());
+  int kept_count = 0;
   for (std::size_t s = 0; s < segments_.size(); ++s) {
-    RootSegment segment = segments_[s];
-    if (segment.parent >= 0 && new_index[segment.parent] < 0) segment.alive = false;
-    if (!segment.alive) continue;
-    if (segment.parent >= 0) segment.parent = new_index[segment.parent];
-    new_index[s] = static_cast<int>(kept.size());
-    kept.push_back(segment);
+    const RootSegment& segment = segments_[s];
+    if (segment.parent >= 0 && new_index[segment.parent] < 0) continue;
+    if (segment.alive) new_index[s] = kept_count++;
+  }
+  // Exactly as many as are kept: the year's new segments may have doubled the list's capacity.
+  std::vector<RootSegment> kept;
+  kept.reserve(static_cast<std::size_t>(kept_count));
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    if (new_index[s] < 0) continue;
+    kept.push_back(segments_[s]);
+    if (kept.back().parent >= 0) kept.back().parent = new_index[kept.back().parent];
   }
   segments_ = std::move(kept);
 }

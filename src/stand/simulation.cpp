@@ -51,6 +51,24 @@ CompetitionNeighbourhood competition_for(const Scenario& scenario) {
           StandEdges{light.periodic, PlotBounds{light.plot_x_min, light.plot_y_min, light.plot_x_max, light.plot_y_max}}};
 }
 
+long living_tree_count(const Stand& stand) {
+  return std::count_if(stand.trees().begin(), stand.trees().end(), [](const StandTree& tree) { return tree.alive(); });
+}
+
+// What the trees hold at the end of the run: their fates, and the size of the living crowns and root systems.
+void count_trees(const Stand& stand, const RootZone* roots, SimulationSummary& summary) {
+  for (const auto& tree : stand.trees()) {
+    summary.trees_alive += tree.status == TreeStatus::alive;
+    summary.trees_removed += tree.status == TreeStatus::removed;
+    summary.trees_dead += tree.status == TreeStatus::dead;
+    if (!tree.alive()) continue;
+    summary.leaf_balls += tree.tree.foliage_shoot_indices().size();
+    summary.shoots += tree.tree.shoots().size();
+  }
+  if (roots)
+    for (const roots::RootSystem* system : roots->living_roots()) summary.root_segments += system->segments().size();
+}
+
 }  // namespace
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
@@ -90,7 +108,9 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                            {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,
                             scenario.run.output_interval_years},
                            clock);
+  long tree_years = 0;
   for (int year = 0; year <= scenario.run.years; ++year) {
+    if (year > 0) tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
     if (options.observe_year) options.observe_year(stand, year);
     progress.update(year);
@@ -100,11 +120,11 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   SimulationSummary summary;
   summary.first_stand_age = scenario.stand.age_at_survey_years;
   summary.last_stand_age = stand.stand_age();
-  for (const auto& tree : stand.trees()) {
-    summary.trees_alive += tree.status == TreeStatus::alive;
-    summary.trees_removed += tree.status == TreeStatus::removed;
-    summary.trees_dead += tree.status == TreeStatus::dead;
-  }
+  count_trees(stand, roots ? &*roots : nullptr, summary);
+  summary.tree_years = tree_years;
+  summary.device = solver->name();
+  summary.light_candidates_per_ball = solver->last_statistics().mean_candidates;
+  summary.stage_seconds = clock.stages();
   summary.light_seconds = clock.seconds("light");
   summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scenario/scenario.hpp"
 
@@ -27,6 +29,15 @@ struct SimulationSummary {
   int first_stand_age = 0, last_stand_age = 0;
   int trees_alive = 0, trees_removed = 0, trees_dead = 0;
   double wall_seconds = 0, light_seconds = 0;
+  std::string device;                                        // the light solver's name, as run.json
+  std::vector<std::pair<std::string, double>> stage_seconds;  // as run.json
+  // The size of the run, for `heliostand bench stand`: tree-years = Σ over the simulated years of the trees that
+  // grew in it; the rest counts what the living trees hold at the end.
+  long tree_years = 0;
+  std::size_t leaf_balls = 0;     // one per foliage-carrying shoot tip (what the light solver sees)
+  std::size_t shoots = 0;         // living and dead shoots still attached (the crowns as held in memory)
+  std::size_t root_segments = 0;  // of their root systems
+  double light_candidates_per_ball = 0;  // near-field occluders per ball in the last light solve (its memory driver)
 };
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options);

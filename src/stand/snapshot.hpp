@@ -19,6 +19,8 @@ class SnapshotTracker {
   // `mesh_trunks`: build each standing tree's trunk surface (only the VTK output reads it).
   explicit SnapshotTracker(bool mesh_trunks = true) : mesh_trunks_(mesh_trunks) {}
   StandSnapshot take(const Stand& stand, int year_index);
+  // Whether tree `index` (Stand::trees() order) has been written as removed or dead: no later year writes it again.
+  bool written_as_gone(std::size_t index) const { return index < written_as_gone_.size() && written_as_gone_[index]; }
 
  private:
   bool mesh_trunks_;

@@ -146,6 +146,16 @@ std::vector<TreeEvent> Stand::thin() {
   return removed;
 }
 
+std::size_t Stand::release_gone_crowns(const std::function<bool(const StandTree&)>& written_for_the_last_time) {
+  std::size_t released = 0;
+  for (StandTree& tree : trees_) {
+    if (tree.alive() || tree.tree.crown_released() || !written_for_the_last_time(tree)) continue;
+    tree.tree.release_crown();
+    ++released;
+  }
+  return released;
+}
+
 StandMeasures Stand::measures() const {
   std::vector<TreeMeasurement> living;
   for (const auto& tree : trees_)

@@ -3,6 +3,7 @@
 // year are methods here; stand/stand_year.hpp owns their order (grow → light → respond → soil → mortality →
 // thinning → metrics → write).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,10 @@ class Stand {
   // Step 6. The thinnings whose trigger fires this year (stand/thinning_trigger.hpp), in order, each seeing the
   // stand the one before left. Returns the removals, in removal order.
   std::vector<TreeEvent> thin();
+
+  // Step 9. Trees that have left the stand (removed or dead) give back their crowns (ConiferTree::release_crown) once
+  // `written_for_the_last_time` says no output will read them again. Returns how many were let go.
+  std::size_t release_gone_crowns(const std::function<bool(const StandTree&)>& written_for_the_last_time);
 
   // Hegyi's competition index of every tree (trees() order) among the living; NaN for trees not alive.
   std::vector<double> hegyi_indices() const;

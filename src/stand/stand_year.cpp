@@ -42,6 +42,10 @@ StandYearResult StandYear::run(int year) {
   record(stand_.thin());
   // 7 metrics, 8 write
   if (output_) clock_.time("output", [&] { write_outputs(year); return 0; });
+  // 9 let go: without outputs nothing reads a gone tree again; with them, once an output year has shown it gone.
+  stand_.release_gone_crowns([&](const StandTree& tree) {
+    return output_ == nullptr || snapshots_.written_as_gone(static_cast<std::size_t>(tree.id));
+  });
   return result;
 }
 

@@ -8,7 +8,8 @@
 //   6 thinning   the thinnings whose age or condition comes due (stand/thinning_trigger.hpp)
 //   7 metrics    the living stand's inventory (every year); the snapshot of an output year, which it then measures
 //   8 write      stand_table.csv and events.csv (every year); trees.csv and the VTK year (every output year)
-// Year 0 is the established stand: steps 2, 4 (balance only), 6, 7 and 8; no growth and no response yet,
+//   9 let go     trees that left the stand and have been written for the last time drop their crowns (memory)
+// Year 0 is the established stand: steps 2, 4 (balance only), 6, 7, 8 and 9; no growth and no response yet,
 // since the established trees grew without neighbours and competition acts from the first simulated year on.
 // Data flows one way: each step reads what the steps before it wrote this year.
 #include <cstdint>

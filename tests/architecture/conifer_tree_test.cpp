@@ -237,6 +237,17 @@ TEST(ConiferTree, GrowingOtherTreesInBetweenChangesNothing) {
   for (std::size_t i = 0; i < alone.shoots().size(); ++i) EXPECT_EQ(alone.shoots()[i].tip, interleaved.shoots()[i].tip);
 }
 
+// Memory (issue 16): a year's new shoots and fallen branches leave the crown's lists no bigger than they hold,
+// through the years when branches fall (remove_flagged) as well as those when none do.
+TEST(ConiferTree, ShootAndAxisListsHoldNoSpareCapacityAfterAYear) {
+  ConiferTree tree({}, {}, {}, 5, 3);
+  for (int year = 0; year < 30; ++year) {
+    tree.grow_year();
+    EXPECT_EQ(tree.shoots().capacity(), tree.shoots().size()) << "age " << tree.age();
+    EXPECT_EQ(tree.axes().capacity(), tree.axes().size()) << "age " << tree.age();
+  }
+}
+
 TEST(ConiferTree, LeafBallsOnRecentLivingShootsWithClampedRadius) {
   const ConiferTree tree = grown(20);
   const SpeciesParameters species;

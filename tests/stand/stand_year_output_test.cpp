@@ -73,5 +73,67 @@ TEST(StandYearOutput, StandTableEveryYearTreesOnlyInOutputYears) {
       << "the stand table measures the trees trees.csv lists";
 }
 
+std::vector<StandTree> three_trees() {
+  std::vector<StandTree> trees;
+  trees.push_back(planted(0, "todomatsu", {2, 2, 0}));
+  trees.push_back(planted(1, "karamatsu", {6, 3, 0}));
+  trees.push_back(planted(2, "todomatsu", {4, 7, 0}));
+  return trees;
+}
+
+// Step 9 (memory): a tree thinned in a year that is not written keeps its crown until the next output year has
+// written it as removed, with the crown it had; then it gives the crown back.
+TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
+  testing::TempFolder tmp("stand_year_release");
+  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
+  Stand stand(0.01, 20, three_trees(), {thin_larch});
+  LightParameters sky;
+  sky.sky_bands = 4;
+  sky.sky_sectors = 8;
+  ReferenceLightSolver solver(sky);
+  StageClock clock;
+  StandOutput output({tmp.path() / "run", false, 100.0, false});
+  StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
+  for (int year = 0; year <= 2; ++year) simulated_year.run(year);
+  const ConiferTree& larch = stand.trees()[1].tree;
+  ASSERT_FALSE(stand.trees()[1].alive()) << "thinned at 22";
+  ASSERT_FALSE(larch.crown_released()) << "age 23 writes it";
+  const double crown_base = larch.crown_base_m(), crown_radius = larch.crown_radius_m();
+  const std::size_t shoots = larch.shoots().size();
+  EXPECT_GT(shoots, 0u);
+
+  simulated_year.run(3);
+  EXPECT_TRUE(larch.crown_released());
+  EXPECT_TRUE(larch.shoots().empty());
+  EXPECT_FALSE(stand.trees()[0].tree.crown_released()) << "living trees keep theirs";
+  simulated_year.run(4);
+  output.finish(RunManifest{});
+
+  std::vector<std::map<std::string, std::string>> larch_rows;
+  for (const auto& row : read_rows(tmp.path() / "run" / "trees.csv"))
+    if (row.at("label") == "2" && row.at("status") != "alive") larch_rows.push_back(row);
+  ASSERT_EQ(larch_rows.size(), 1u) << "written as removed once, at 23";
+  EXPECT_EQ(larch_rows[0].at("stand_age"), "23");
+  EXPECT_NEAR(std::stod(larch_rows[0].at("crown_base_m")), crown_base, 1e-3);
+  EXPECT_NEAR(std::stod(larch_rows[0].at("crown_radius_m")), crown_radius, 1e-3);
+}
+
+// Without outputs nothing reads a gone tree again: its crown goes at the end of the year it leaves.
+TEST(StandYearOutput, WithoutOutputsAGoneTreeGivesBackItsCrownAtOnce) {
+  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
+  Stand stand(0.01, 20, three_trees(), {thin_larch});
+  LightParameters sky;
+  sky.sky_bands = 4;
+  sky.sky_sectors = 8;
+  ReferenceLightSolver solver(sky);
+  StageClock clock;
+  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 3}, clock);
+  for (int year = 0; year <= 1; ++year) simulated_year.run(year);
+  EXPECT_FALSE(stand.trees()[1].tree.crown_released());
+  simulated_year.run(2);
+  EXPECT_TRUE(stand.trees()[1].tree.crown_released());
+  EXPECT_FALSE(stand.trees()[0].tree.crown_released());
+}
+
 }  // namespace
 }  // namespace heliostand

@@ -1,0 +1,108 @@
+#include "stand/stand_benchmark.hpp"
+
+#include <malloc.h>
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "scenario/scenario.hpp"
+#include "stand/simulation.hpp"
+
+namespace heliostand {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder under the system's temporary directory, removed with this object.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    std::string name = (fs::temp_directory_path() / "heliostand-bench-XXXXXX").string();
+    if (::mkdtemp(name.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder for the tables");
+    path_ = name;
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// Bytes the program holds on the heap now (glibc's mallinfo2, every arena, mmapped blocks included).
+std::size_t heap_in_use_bytes() {
+  const struct mallinfo2 heap = ::mallinfo2();
+  return heap.uordblks + heap.hblkhd;
+}
+
+nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary& run, std::size_t heap_at_end) {
+  nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+  for (const auto& [stage, seconds] : run.stage_seconds) stages[stage] = seconds;
+  const std::size_t peak = peak_resident_bytes();
+  const std::size_t trees = scenario.survey.trees.size();
+  nlohmann::ordered_json json;
+  json["benchmark"] = "stand";
+  json["scenario"] = scenario.file.string();
+  json["device"] = run.device;
+  json["seed"] = scenario.run.seed;
+  json["vtk_output"] = false;
+  json["years"] = run.last_stand_age - run.first_stand_age;
+  json["first_stand_age"] = run.first_stand_age;
+  json["last_stand_age"] = run.last_stand_age;
+  json["trees"] = trees;
+  json["trees_alive_at_end"] = run.trees_alive;
+  json["trees_removed"] = run.trees_removed;
+  json["trees_dead"] = run.trees_dead;
+  json["tree_years"] = run.tree_years;
+  json["stage_seconds"] = stages;
+  json["total_seconds"] = run.wall_seconds;
+  json["tree_years_per_second"] = run.wall_seconds > 0 ? run.tree_years / run.wall_seconds : 0.0;
+  json["leaf_balls_at_end"] = run.leaf_balls;
+  json["shoots_at_end"] = run.shoots;
+  json["root_segments_at_end"] = run.root_segments;
+  json["light_candidates_per_ball"] = run.light_candidates_per_ball;
+  json["heap_in_use_at_end_bytes"] = heap_at_end;
+  json["peak_memory_bytes"] = peak;
+  json["peak_memory_mib"] = static_cast<double>(peak) / (1024.0 * 1024.0);
+  return json;
+}
+
+}  // namespace
+
+std::size_t peak_resident_bytes() {
+  rusage usage{};
+  if (::getrusage(RUSAGE_SELF, &usage) != 0) return 0;
+  return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+std::string run_stand_benchmark(const StandBenchmarkOptions& options) {
+  Scenario scenario = load_scenario(options.scenario);
+  if (options.seed) scenario.set_seed(*options.seed);
+  if (options.years) scenario.set_years(*options.years);
+  for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+  std::optional<ScratchFolder> scratch;
+  if (options.tables_folder.empty()) scratch.emplace();
+  SimulationOptions run;
+  run.output_folder = scratch ? scratch->path() : options.tables_folder;
+  run.force = options.force;
+  run.device = options.device;
+  run.write_vtk = false;
+  run.command_line = options.command_line;
+  // The heap after the last year, while the stand is still held: what the grown trees and roots cost to keep.
+  std::size_t heap_at_end = 0;
+  run.observe_year = [&](const Stand&, int year) {
+    if (year == scenario.run.years) heap_at_end = heap_in_use_bytes();
+  };
+  const SimulationSummary summary = run_simulation(scenario, run);
+  return report(scenario, summary, heap_at_end).dump(2) + "\n";
+}
+
+}  // namespace heliostand

@@ -1,0 +1,129 @@
+// `heliostand bench stand` (issue 16 item 1) as a user runs it, on the tiny stand for one year: the JSON's fields
+// and counts. Timings are only checked to be there, never against a bound (DESIGN.md: no timed unit tests).
+#include <gtest/gtest.h>
+
+#include <vtkCompositeDataSet.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLMultiBlockDataReader.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_runner.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The eight trees of stands/tiny, age 20, roots on, without its thinning (validation/bench/stands/tiny.toml); the
+// reference solver keeps it quick and device-free.
+const std::string tiny = source_path("validation/bench/stands/tiny.toml").string();
+
+struct Bench {
+  CliResult cli;
+  nlohmann::json json;
+};
+
+// One year of the tiny stand; the JSON is read from -o (stdout and stderr share the captured output).
+Bench bench_tiny(const fs::path& folder, const std::string& extra = "") {
+  fs::create_directories(folder);
+  const fs::path json = folder / "bench.json";
+  Bench bench;
+  bench.cli = run_cli("bench stand " + tiny + " --years 1 --device reference -o " + json.string() + " " + extra + " -q");
+  if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
+  return bench;
+}
+
+vtkPolyData* block_of_year(const fs::path& run, const std::string& name, vtkSmartPointer<vtkXMLMultiBlockDataReader>& reader) {
+  reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
+  reader->SetFileName((run / "stand" / "stand_age_0021.vtm").c_str());
+  reader->Update();
+  auto* year = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  for (unsigned i = 0; year != nullptr && i < year->GetNumberOfBlocks(); ++i) {
+    const char* block_name = year->GetMetaData(i)->Get(vtkCompositeDataSet::NAME());
+    if (block_name != nullptr && name == block_name) return vtkPolyData::SafeDownCast(year->GetBlock(i));
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(BenchStandCli, ReportsTheRunAsJson) {
+  const fs::path folder = scratch_folder("bench-stand-json");
+  const Bench bench = bench_tiny(folder);
+  ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
+  const auto& json = bench.json;
+  EXPECT_EQ(json.at("benchmark"), "stand");
+  EXPECT_EQ(json.at("vtk_output"), false);
+  EXPECT_EQ(json.at("device"), "reference");
+  EXPECT_EQ(json.at("years"), 1);
+  EXPECT_EQ(json.at("first_stand_age"), 20);
+  EXPECT_EQ(json.at("last_stand_age"), 21);
+  EXPECT_EQ(json.at("trees"), 8);
+  EXPECT_EQ(json.at("trees_alive_at_end"), 8) << "tree 4 is thinned at 23, nothing dies in one year";
+  EXPECT_EQ(json.at("tree_years"), 8);
+  for (const char* stage : {"establishment", "roots", "growth", "light", "light response", "mortality", "output"}) {
+    ASSERT_TRUE(json.at("stage_seconds").contains(stage)) << stage;
+    EXPECT_GE(json.at("stage_seconds").at(stage).get<double>(), 0.0) << stage;
+  }
+  const double total = json.at("total_seconds");
+  EXPECT_GT(total, 0.0);
+  EXPECT_NEAR(json.at("tree_years_per_second").get<double>(), 8 / total, 1e-9 * 8 / total);
+  EXPECT_GT(json.at("leaf_balls_at_end").get<long>(), 8 * 10) << "every tree carries foliage";
+  EXPECT_GE(json.at("shoots_at_end").get<long>(), json.at("leaf_balls_at_end").get<long>());
+  EXPECT_GT(json.at("root_segments_at_end").get<long>(), 8);
+  EXPECT_GT(json.at("light_candidates_per_ball").get<double>(), 0.0);
+  const double peak = json.at("peak_memory_bytes");
+  EXPECT_GT(peak, 1 << 20);
+  EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
+}
+
+// The counts are the stand's: the same year grown by `grow` writes as many leaf balls and root segments.
+TEST(BenchStandCli, CountsMatchTheGrownStand) {
+  const fs::path folder = scratch_folder("bench-stand-counts");
+  const Bench bench = bench_tiny(folder);
+  ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
+  const CliResult grown =
+      run_cli("grow " + tiny + " --years 1 --device reference --out " + (folder / "grown").string() + " -q");
+  ASSERT_EQ(grown.status, 0) << grown.output;
+  vtkSmartPointer<vtkXMLMultiBlockDataReader> balls_reader, roots_reader;
+  vtkPolyData* balls = block_of_year(folder / "grown", "leaf_balls", balls_reader);
+  vtkPolyData* roots = block_of_year(folder / "grown", "roots", roots_reader);
+  ASSERT_NE(balls, nullptr);
+  ASSERT_NE(roots, nullptr);
+  EXPECT_EQ(bench.json.at("leaf_balls_at_end").get<vtkIdType>(), balls->GetNumberOfPoints());
+  EXPECT_EQ(bench.json.at("root_segments_at_end").get<vtkIdType>(), roots->GetNumberOfLines());
+}
+
+// Without --tables the run's tables go to a temporary folder that is removed; with it they are kept, without VTK.
+TEST(BenchStandCli, WritesTheTablesOnlyWhereAsked) {
+  const fs::path folder = scratch_folder("bench-stand-tables");
+  const fs::path temporary = folder / "tmp";
+  fs::create_directories(temporary);
+  ::setenv("TMPDIR", temporary.c_str(), 1);  // inherited by the command (std::filesystem::temp_directory_path)
+  const Bench scratch = bench_tiny(folder);
+  ::unsetenv("TMPDIR");
+  ASSERT_EQ(scratch.cli.status, 0) << scratch.cli.output;
+  EXPECT_TRUE(fs::is_empty(temporary)) << "the temporary tables are removed";
+
+  const fs::path tables = folder / "tables";
+  const Bench kept = bench_tiny(folder, "--tables " + tables.string());
+  ASSERT_EQ(kept.cli.status, 0) << kept.cli.output;
+  for (const char* file : {"stand_table.csv", "trees.csv", "events.csv", "run.json"})
+    EXPECT_TRUE(fs::exists(tables / file)) << file;
+  EXPECT_FALSE(fs::exists(tables / "stand.pvd"));
+  EXPECT_FALSE(fs::exists(tables / "stand"));
+}
+
+TEST(BenchStandCli, BadInputExitsTwo) {
+  EXPECT_EQ(run_cli("bench stand " + source_path("validation/bench/stands/no_such_scenario.toml").string()).status, 2);
+  // stands/tiny thins at 23: one year (to 21) would never reach it, as with `grow --years 1`.
+  const CliResult short_run = run_cli("bench stand " + source_path("stands/tiny/scenario.toml").string() + " --years 1");
+  EXPECT_EQ(short_run.status, 2) << short_run.output;
+  EXPECT_NE(short_run.output.find("before the thinning at age 23"), std::string::npos) << short_run.output;
+}
+
+}  // namespace heliostand::testing

@@ -1,0 +1,28 @@
+# The stand benchmark (validation/bench/, issue 16): its scenarios must stay valid, its committed surveys must be
+# what make_planted_stands.py writes, and scaling.py must turn `heliostand bench stand` runs into its table (on the
+# tiny bench stand for one year: timings are never checked, only that the row is there with the stand's counts).
+find_program(HELIOSTAND_BENCH_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT HELIOSTAND_BENCH_PYTHON)
+  find_program(HELIOSTAND_BENCH_PYTHON NAMES python3)
+endif()
+set(BENCH_DIR ${PROJECT_SOURCE_DIR}/validation/bench)
+
+file(GLOB HELIOSTAND_BENCH_SCENARIOS CONFIGURE_DEPENDS ${BENCH_DIR}/stands/*.toml)
+foreach(scenario IN LISTS HELIOSTAND_BENCH_SCENARIOS)
+  get_filename_component(name ${scenario} NAME_WE)
+  add_test(NAME bench.check.${name} COMMAND $<TARGET_FILE:heliostand> check ${scenario})
+  set_tests_properties(bench.check.${name} PROPERTIES LABELS "bench")
+endforeach()
+
+add_test(NAME bench.planted_surveys_are_generated
+         COMMAND sh -c "rm -rf \"$0\" && \"$1\" \"$2/make_planted_stands.py\" \"$0\" && for n in 100 400 1600 2500; do cmp \"$0/planted_$n.csv\" \"$2/stands/planted_$n.csv\" || exit 1; done"
+                 ${PROJECT_BINARY_DIR}/test-output/bench-surveys ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR})
+set_tests_properties(bench.planted_surveys_are_generated PROPERTIES LABELS "bench")
+
+# 8 trees, 1 year: the row reads "| 8 | 8 |" (trees, tree-years).
+add_test(NAME bench.scaling_table
+         COMMAND ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 --device reference --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling)
+set_tests_properties(bench.scaling_table PROPERTIES LABELS "bench" TIMEOUT 300
+                     ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache"
+                     PASS_REGULAR_EXPRESSION "\\| 8 \\| 8 \\| [1-9][0-9,]* \\| [1-9][0-9,]* \\|")

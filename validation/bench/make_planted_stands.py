@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Writes the benchmark surveys: SYNTHETIC 20-year Todomatsu plantations planted on a 2 m x 2 m grid
+(2500 stems/ha, every planting position still stocked), each tree jittered off its grid point, on square
+plots of 20, 40, 80 and 100 m = 100, 400, 1,600 and 2,500 trees (the last one hectare). The sizes follow
+stands/tiny (age 20, 7-10 m tall, DBH 10-14 cm). No tree in them was measured. Deterministic: one fixed
+seed, the same files every run.
+
+    python3 validation/bench/make_planted_stands.py validation/bench/stands
+"""
+import csv
+import random
+import sys
+from pathlib import Path
+
+SEED = 16          # issue 16; any fixed number keeps the files reproducible
+SPACING = 2.0      # m between rows and between plants in a row
+JITTER = 0.3       # m; planters do not hit the grid exactly
+PLOTS = {100: 20.0, 400: 40.0, 1600: 80.0, 2500: 100.0}  # trees: plot edge, m
+
+
+def clip(value, low, high):
+    return max(low, min(high, value))
+
+
+def tree_row(rng, number, grid_x, grid_y, edge):
+    x = clip(grid_x + rng.uniform(-JITTER, JITTER), 0.0, edge)
+    y = clip(grid_y + rng.uniform(-JITTER, JITTER), 0.0, edge)
+    # One vigour score per tree drives all its sizes, so they are correlated as in a real stand.
+    vigour = rng.gauss(0.0, 1.0)
+    height = clip(8.8 + 0.8 * vigour + rng.gauss(0.0, 0.25), 7.0, 10.5)       # m
+    dbh = clip(12.0 + 1.4 * vigour + rng.gauss(0.0, 0.7), 9.0, 15.0)          # cm
+    crown_radius = clip(0.2 + 0.07 * dbh + rng.gauss(0.0, 0.06), 0.8, 1.3)   # m
+    crown_base = clip(4.0 - 0.25 * vigour + rng.gauss(0.0, 0.2), 3.3, 4.6)    # m
+    return [f"P{number:04d}", f"{x:.2f}", f"{y:.2f}", f"{height:.1f}", f"{dbh:.1f}",
+            f"{crown_radius:.2f}", f"{crown_base:.1f}"]
+
+
+def write_stand(folder, trees, edge):
+    rng = random.Random(SEED * 10_000 + trees)
+    cells = int(edge / SPACING)
+    with open(folder / f"planted_{trees}.csv", "w", newline="") as out:
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(["id", "x", "y", "height", "dbh", "crown_radius", "crown_base"])
+        for j in range(cells):
+            for i in range(cells):
+                number = j * cells + i + 1
+                writer.writerow(tree_row(rng, number, SPACING / 2 + i * SPACING, SPACING / 2 + j * SPACING, edge))
+
+
+def main():
+    folder = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).parent / "stands")
+    folder.mkdir(parents=True, exist_ok=True)
+    for trees, edge in PLOTS.items():
+        write_stand(folder, trees, edge)
+
+
+if __name__ == "__main__":
+    main()

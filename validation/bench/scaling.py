@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""How a stand run scales with its number of trees (issue 16): grows the planted benchmark stands
+(validation/bench/stands/planted_{100,400,1600,2500}.toml) a few years each with `heliostand bench stand` and
+writes a Markdown table of time and peak memory per tree and per tree-year against trees.
+
+    validation/bench/scaling.py --heliostand build/heliostand --years 3 --out out/bench
+
+Give --heliostand twice (e.g. build-old/heliostand and build/heliostand) to compare two builds side by side:
+every stand is run by each binary in turn, so both see the same machine load, and the table gets a column of
+ratios (second / first). Each run's JSON is kept in --out; the table goes to stdout and to OUT/scaling.md.
+"""
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+PLANTED = [HERE / "stands" / f"planted_{trees}.toml" for trees in (100, 400, 1600, 2500)]
+MIB = 1024.0 * 1024.0
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--heliostand", action="append", type=Path,
+                        help="heliostand binary (default build/heliostand); twice to compare two builds")
+    parser.add_argument("--years", type=int, default=3, help="years each stand is grown (default 3)")
+    parser.add_argument("--device", help="passed to bench stand (default: the scenarios' device, auto)")
+    parser.add_argument("--stand", action="append", type=Path,
+                        help="scenario to run instead of the four planted stands (repeatable)")
+    parser.add_argument("--out", type=Path, default=Path("out/bench"), help="folder for the JSON and scaling.md")
+    return parser.parse_args()
+
+
+def machine_line():
+    cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                if line.startswith("model name")), platform.processor())
+    memory_kb = next(int(line.split()[1]) for line in Path("/proc/meminfo").read_text().splitlines()
+                     if line.startswith("MemTotal"))
+    return f"{os.cpu_count()} CPUs ({cpu}), {memory_kb / 1024 / 1024:.0f} GiB RAM, {platform.platform()}"
+
+
+def load_average():
+    return "{:.1f} {:.1f} {:.1f}".format(*os.getloadavg())
+
+
+def bench(binary, scenario, years, device, json_path):
+    command = [str(binary), "bench", "stand", str(scenario), "--years", str(years), "-o", str(json_path), "-q"]
+    if device:
+        command += ["--device", device]
+    print("$ " + " ".join(command), file=sys.stderr, flush=True)
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    return json.loads(json_path.read_text())
+
+
+def row(run):
+    """The quantities of one run that the table shows, per tree and per tree-year."""
+    tree_years = max(1, run["tree_years"])
+    peak_mib = run["peak_memory_bytes"] / MIB
+    light = run["stage_seconds"].get("light", 0.0)
+    return {
+        "trees": run["trees"],
+        "tree_years": run["tree_years"],
+        "leaf_balls": run["leaf_balls_at_end"],
+        "root_segments": run["root_segments_at_end"],
+        "seconds": run["total_seconds"],
+        "light_share": light / run["total_seconds"] if run["total_seconds"] > 0 else 0.0,
+        "ms_per_tree_year": 1000.0 * run["total_seconds"] / tree_years,
+        "peak_mib": peak_mib,
+        "mib_per_tree": peak_mib / max(1, run["trees"]),
+        "kib_per_tree_year": 1024.0 * peak_mib / tree_years,
+    }
+
+
+def table(label, rows):
+    lines = [f"**{label}**", "",
+             "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light | ms / tree-year "
+             "| peak MiB | MiB / tree | KiB / tree-year |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        lines.append(f"| {r['trees']:,} | {r['tree_years']:,} | {r['leaf_balls']:,} | {r['root_segments']:,} "
+                     f"| {r['seconds']:.1f} | {100 * r['light_share']:.0f} % | {r['ms_per_tree_year']:.0f} "
+                     f"| {r['peak_mib']:.0f} | {r['mib_per_tree']:.2f} | {r['kib_per_tree_year']:.0f} |")
+    lines += ["", marginal_memory(rows), ""]
+    return lines
+
+
+def marginal_memory(rows):
+    """Least-squares slope of peak memory against trees and against leaf balls: the memory one more tree (or ball)
+    costs, without the fixed part (program, OpenCL runtime, kernels)."""
+    if len(rows) < 2:
+        return "(one stand: no slope)"
+
+    def slope(xs, ys):
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        sxx = sum((x - mx) ** 2 for x in xs)
+        return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else float("nan")
+
+    peaks = [r["peak_mib"] * MIB for r in rows]
+    per_tree = slope([r["trees"] for r in rows], peaks)
+    per_ball = slope([r["leaf_balls"] for r in rows], peaks)
+    return (f"Peak memory grows by {per_tree / 1024:.0f} KiB per tree "
+            f"({per_ball:.0f} bytes per leaf ball at the end), least squares over the stands.")
+
+
+def ratio_table(labels, rows_a, rows_b):
+    lines = [f"**{labels[1]} / {labels[0]}** (same stands, run alternately)", "",
+             "| trees | wall time | light share | peak memory |", "|---:|---:|---:|---:|"]
+    for a, b in zip(rows_a, rows_b):
+        lines.append(f"| {a['trees']:,} | {b['seconds'] / a['seconds']:.2f} | "
+                     f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {b['peak_mib'] / a['peak_mib']:.2f} |")
+    return lines + [""]
+
+
+def main():
+    arguments = parse_arguments()
+    binaries = arguments.heliostand or [Path("build/heliostand")]
+    if len(binaries) > 2:
+        sys.exit("at most two --heliostand binaries")
+    stands = arguments.stand or PLANTED
+    arguments.out.mkdir(parents=True, exist_ok=True)
+    started = time.strftime("%Y-%m-%d %H:%M %Z")
+    loads = [load_average()]
+    runs = {binary: [] for binary in binaries}
+    for scenario in stands:
+        for number, binary in enumerate(binaries):
+            json_path = arguments.out / f"{scenario.stem}.{number}.json"
+            runs[binary].append(bench(binary, scenario, arguments.years, arguments.device, json_path))
+            loads.append(load_average())
+    rows = {binary: [row(run) for run in runs[binary]] for binary in binaries}
+
+    device = runs[binaries[0]][0]["device"]
+    lines = [f"Stand scaling, {arguments.years} years per stand, started {started}.", "",
+             f"Machine: {machine_line()}; device {device}.",
+             f"Load average (1, 5, 15 min) before and after each run: {'; '.join(loads)}.", "",
+             "Command: `" + " ".join([sys.argv[0]] + sys.argv[1:]) + "`", ""]
+    for binary in binaries:
+        lines += table(str(binary), rows[binary])
+    if len(binaries) == 2:
+        lines += ratio_table([str(b) for b in binaries], rows[binaries[0]], rows[binaries[1]])
+    text = "\n".join(lines)
+    (arguments.out / "scaling.md").write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
