@@ -70,6 +70,7 @@ def row(run):
         "light_share": light / run["total_seconds"] if run["total_seconds"] > 0 else 0.0,
         "ms_per_tree_year": 1000.0 * run["total_seconds"] / tree_years,
         "peak_mib": peak_mib,
+        "held_mib": run["heap_in_use_at_end_bytes"] / MIB,
         "mib_per_tree": peak_mib / max(1, run["trees"]),
         "kib_per_tree_year": 1024.0 * peak_mib / tree_years,
     }
@@ -78,40 +79,44 @@ def row(run):
 def table(label, rows):
     lines = [f"**{label}**", "",
              "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light | ms / tree-year "
-             "| peak MiB | MiB / tree | KiB / tree-year |",
-             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "| peak MiB | MiB / tree | KiB / tree-year | held at end MiB | KiB held / tree |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r['trees']:,} | {r['tree_years']:,} | {r['leaf_balls']:,} | {r['root_segments']:,} "
                      f"| {r['seconds']:.1f} | {100 * r['light_share']:.0f} % | {r['ms_per_tree_year']:.0f} "
-                     f"| {r['peak_mib']:.0f} | {r['mib_per_tree']:.2f} | {r['kib_per_tree_year']:.0f} |")
+                     f"| {r['peak_mib']:.0f} | {r['mib_per_tree']:.2f} | {r['kib_per_tree_year']:.0f} "
+                     f"| {r['held_mib']:.0f} | {1024 * r['held_mib'] / max(1, r['trees']):.0f} |")
     lines += ["", marginal_memory(rows), ""]
     return lines
 
 
+def slope(xs, ys):
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else float("nan")
+
+
 def marginal_memory(rows):
-    """Least-squares slope of peak memory against trees and against leaf balls: the memory one more tree (or ball)
-    costs, without the fixed part (program, OpenCL runtime, kernels)."""
+    """Least-squares slopes against trees and leaf balls: what one more tree (or ball) costs, without the fixed part
+    (program, OpenCL runtime, kernels). Peak = the whole run's high-water mark; held = the heap after the last year."""
     if len(rows) < 2:
         return "(one stand: no slope)"
-
-    def slope(xs, ys):
-        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-        sxx = sum((x - mx) ** 2 for x in xs)
-        return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else float("nan")
-
+    trees = [r["trees"] for r in rows]
+    balls = [r["leaf_balls"] for r in rows]
     peaks = [r["peak_mib"] * MIB for r in rows]
-    per_tree = slope([r["trees"] for r in rows], peaks)
-    per_ball = slope([r["leaf_balls"] for r in rows], peaks)
-    return (f"Peak memory grows by {per_tree / 1024:.0f} KiB per tree "
-            f"({per_ball:.0f} bytes per leaf ball at the end), least squares over the stands.")
+    held = [r["held_mib"] * MIB for r in rows]
+    return (f"Least squares over the stands: peak memory grows by {slope(trees, peaks) / 1024:.0f} KiB per tree "
+            f"({slope(balls, peaks):.0f} bytes per leaf ball at the end); the heap held after the last year by "
+            f"{slope(trees, held) / 1024:.0f} KiB per tree.")
 
 
 def ratio_table(labels, rows_a, rows_b):
     lines = [f"**{labels[1]} / {labels[0]}** (same stands, run alternately)", "",
-             "| trees | wall time | light share | peak memory |", "|---:|---:|---:|---:|"]
+             "| trees | wall time | light share | peak memory | held at end |", "|---:|---:|---:|---:|---:|"]
     for a, b in zip(rows_a, rows_b):
         lines.append(f"| {a['trees']:,} | {b['seconds'] / a['seconds']:.2f} | "
-                     f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {b['peak_mib'] / a['peak_mib']:.2f} |")
+                     f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {b['peak_mib'] / a['peak_mib']:.2f} "
+                     f"| {b['held_mib'] / a['held_mib']:.2f} |")
     return lines + [""]
 
 
