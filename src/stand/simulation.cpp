@@ -123,7 +123,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   count_trees(stand, roots ? &*roots : nullptr, summary);
   summary.tree_years = tree_years;
   summary.device = solver->name();
-  summary.light_candidates_per_ball = solver->last_statistics().mean_candidates;
+  summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
   summary.stage_seconds = clock.stages();
   summary.light_seconds = clock.seconds("light");
   summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
+#include "compute/device_choice.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -28,11 +29,11 @@ struct Bench {
 };
 
 // One year of the tiny stand; the JSON is read from -o (stdout and stderr share the captured output).
-Bench bench_tiny(const fs::path& folder, const std::string& extra = "") {
+Bench bench_tiny(const fs::path& folder, const std::string& extra = "", const std::string& device = "reference") {
   fs::create_directories(folder);
   const fs::path json = folder / "bench.json";
   Bench bench;
-  bench.cli = run_cli("bench stand " + tiny + " --years 1 --device reference -o " + json.string() + " " + extra + " -q");
+  bench.cli = run_cli("bench stand " + tiny + " --years 1 --device " + device + " -o " + json.string() + " " + extra + " -q");
   if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
   return bench;
 }
@@ -75,10 +76,19 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_GT(json.at("leaf_balls_at_end").get<long>(), 8 * 10) << "every tree carries foliage";
   EXPECT_GE(json.at("shoots_at_end").get<long>(), json.at("leaf_balls_at_end").get<long>());
   EXPECT_GT(json.at("root_segments_at_end").get<long>(), 8);
-  EXPECT_GT(json.at("light_candidates_per_ball").get<double>(), 0.0);
+  EXPECT_GT(json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
   const double peak = json.at("peak_memory_bytes");
   EXPECT_GT(peak, 1 << 20);
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
+}
+
+// The OpenCL solver discards a tile's occluders beyond each receiver's cut-off inside the kernel; the length of the
+// tile lists it scans (what sizes the light stage's candidate memory) must still reach the JSON.
+TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
+  const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
+  ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
+  EXPECT_GT(bench.json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
 }
 
 // The counts are the stand's: the same year grown by `grow` writes as many leaf balls and root segments.
