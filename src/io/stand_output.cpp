@@ -6,8 +6,18 @@
 
 namespace heliostand {
 
-StandOutput::Table::Table(const std::filesystem::path& final_path)
-    : file(final_path), stream(file.temporary_path(), std::ios::trunc), csv(stream) {
+StandOutput::Table::Table(const std::filesystem::path& final_path, std::optional<std::uint64_t> resume_at)
+    : file(final_path), csv(stream) {
+  if (resume_at) {
+    std::error_code error;
+    const auto written = std::filesystem::file_size(file.temporary_path(), error);
+    if (error || written < *resume_at)
+      throw OutputFolderError(fmt::format("cannot resume {}: the checkpoint counts {} bytes of it, the folder holds {}",
+                                          file.temporary_path().string(), *resume_at,
+                                          error ? std::string("none") : std::to_string(written)));
+    std::filesystem::resize_file(file.temporary_path(), *resume_at);
+  }
+  stream.open(file.temporary_path(), resume_at ? std::ios::app : std::ios::trunc);
   if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
 }
 
@@ -24,9 +34,16 @@ double checked_plot_area(double plot_area_m2) {
 
 StandOutput::StandOutput(const StandOutputOptions& options)
     : plot_area_m2_(checked_plot_area(options.plot_area_m2)),
-      folder_(options.folder, options.force),
+      folder_(options.folder, options.force, options.resume),
       ledger_(plot_area_m2_ / kSquareMetresPerHectare) {
   if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
+  if (options.resume) {
+    // What the killed run was writing when it died (a VTK year, a checkpoint) is not part of any checkpoint.
+    folder_.remove_stray_temporaries({temporary_sibling(folder_.path_of(stand_table_file)),
+                                      temporary_sibling(folder_.path_of(trees_file)),
+                                      temporary_sibling(folder_.path_of(events_file))});
+    return;  // the tables are reopened by resume_tables()
+  }
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file));
   events_ = std::make_unique<Table>(folder_.path_of(events_file));
@@ -35,8 +52,14 @@ StandOutput::StandOutput(const StandOutputOptions& options)
   write_events_header(events_->csv);
 }
 
+void StandOutput::resume_tables(const TableLengths& lengths) {
+  stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file), lengths[0]);
+  trees_ = std::make_unique<Table>(folder_.path_of(trees_file), lengths[1]);
+  events_ = std::make_unique<Table>(folder_.path_of(events_file), lengths[2]);
+}
+
 StandOutput::~StandOutput() {
-  if (finished_) return;
+  if (finished_ || !stand_table_) return;
   try {
     close_tables();
   } catch (...) {
