@@ -164,7 +164,8 @@ struct Access {
       throw CheckpointError(fmt::format("holds tree '{}' ({}) where the survey has '{}' ({})", label, species,
                                         record.id, record.species));
     StandTree tree{.id = id, .label = std::move(label), .species = std::move(species),
-                   .tree = load_tree(in, scenario.species_of(record))};
+                   .tree = load_tree(in, scenario.species_of(record)), .status = TreeStatus::alive,
+                   .status_changed_at_age = -1, .status_reason = {}, .hollows = {}, .light_budget = {}};
     in.raw_into(tree.status, "tree status");
     in.raw_into(tree.status_changed_at_age, "tree status age");
     tree.status_reason = in.text("tree status reason");
@@ -325,6 +326,7 @@ std::string save_run(const RunParts& run) {
   Access::save(out, run.clock);
   Access::tag(out, Section::progress);
   out.raw(static_cast<std::int64_t>(run.progress.tree_years));
+  out.raw(run.progress.wall_seconds);
   out.text(run.progress.started_utc);
   out.text(run.progress.command_line);
   Access::tag(out, Section::stand);
@@ -346,6 +348,7 @@ void load_run(std::string_view payload, const Scenario& scenario, const RunParts
   Access::load(in, run.clock);
   Access::expect(in, Section::progress, "progress");
   run.progress.tree_years = static_cast<long>(in.raw<std::int64_t>("tree-years"));
+  in.raw_into(run.progress.wall_seconds, "wall seconds");
   run.progress.started_utc = in.text("start time");
   run.progress.command_line = in.text("command line");
   Access::expect(in, Section::stand, "stand");

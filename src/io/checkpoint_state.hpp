@@ -24,6 +24,7 @@ namespace checkpoint {
 // What the run loop itself carries besides its objects.
 struct RunProgress {
   long tree_years = 0;
+  double wall_seconds = 0;   // the run's up to the checkpoint, every earlier session's included
   std::string started_utc;   // of the run as first started: run.json keeps it
   std::string command_line;  // likewise: the command that reproduces the outputs
 };

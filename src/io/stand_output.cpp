@@ -10,6 +10,9 @@ StandOutput::Table::Table(const std::filesystem::path& final_path, std::optional
     : file(final_path), csv(stream) {
   if (resume_at) {
     std::error_code error;
+    // A run that stopped on an error (not killed) renamed its tables into place, without run.json: take them back.
+    if (!std::filesystem::exists(file.temporary_path()) && std::filesystem::exists(file.final_path()))
+      std::filesystem::rename(file.final_path(), file.temporary_path());
     const auto written = std::filesystem::file_size(file.temporary_path(), error);
     if (error || written < *resume_at)
       throw OutputFolderError(fmt::format("cannot resume {}: the checkpoint counts {} bytes of it, the folder holds {}",

@@ -128,21 +128,27 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                            {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,
                             scenario.run.output_interval_years},
                            clock);
-  checkpoint::RunProgress run_progress{0, manifest.started_utc, options.command_line};
+  checkpoint::RunProgress run_progress{0, 0.0, manifest.started_utc, options.command_line};
   const checkpoint::RunParts parts{stand, roots ? &*roots : nullptr, output, simulated_year, clock, run_progress};
   int first_year = 0;
   if (options.resume)
     first_year = 1 + resume_from_newest(options.output_folder, identity, [&](const checkpoint::CheckpointFile& file) {
       checkpoint::load_run(file.payload, scenario, parts);
     });
+  const double earlier_wall_seconds = run_progress.wall_seconds;  // of the sessions before a resume
+  auto wall_seconds = [&] {
+    return earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
 
   ProgressLine progress(scenario.run.years, options.show_progress);
   for (int year = first_year; year <= scenario.run.years; ++year) {
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
     if (options.observe_year) options.observe_year(stand, year);
-    if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years))
+    if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years)) {
+      run_progress.wall_seconds = wall_seconds();
       clock.time("checkpoint", [&] { return write_checkpoint(options.output_folder, year, identity, parts); });
+    }
     progress.update(year);
   }
   progress.finish();
@@ -156,7 +162,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   summary.light_candidates_per_ball = solver->last_statistics().mean_candidates;
   summary.stage_seconds = clock.stages();
   summary.light_seconds = clock.seconds("light");
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary.wall_seconds = wall_seconds();
 
   // A resumed run records the run it continues: its first command and start (docs/user-guide.md).
   manifest.started_utc = run_progress.started_utc;
