@@ -115,6 +115,9 @@ TEST(CheckpointCli, AKilledRunResumesToTheUninterruptedOutputsAndBadCheckpointsA
   const auto uninterrupted = run_cli(grow + " -q");
   ASSERT_EQ(uninterrupted.status, 0) << uninterrupted.output;
   EXPECT_TRUE(checkpoint_files(out).empty()) << "a finished run keeps no checkpoints";
+  const auto finished = run_cli(grow + " --resume -q");
+  EXPECT_NE(finished.status, 0);
+  EXPECT_NE(finished.output.find("has finished (it has its run.json)"), std::string::npos) << finished.output;
   fs::rename(out, folder / "uninterrupted");
 
   grow_and_kill(grow, out / "checkpoint_year_0004.hsck", out / ".stand_table.csv.tmp");
