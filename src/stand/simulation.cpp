@@ -62,6 +62,15 @@ int write_checkpoint(const std::filesystem::path& folder, int year, const checkp
   return 0;
 }
 
+std::vector<StandTree> established_trees(const Scenario& scenario, StageClock& clock) {
+  EstablishmentReport report;
+  auto trees = clock.time("establishment", [&] { return establish_stand(scenario, report); });
+  spdlog::info("established {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
+               trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
+               report.unusable);
+  return trees;
+}
+
 long living_tree_count(const Stand& stand) {
   return std::count_if(stand.trees().begin(), stand.trees().end(), [](const StandTree& tree) { return tree.alive(); });
 }
@@ -109,15 +118,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
 
   StageClock clock;
   // A resumed run's stand and roots come from its checkpoint: they start empty and are not spun up.
-  std::vector<StandTree> trees;
-  if (!options.resume) {
-    EstablishmentReport report;
-    trees = clock.time("establishment", [&] { return establish_stand(scenario, report); });
-    spdlog::info("established {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
-                 trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
-                 report.unusable);
-  }
-  Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
+  Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years,
+              options.resume ? std::vector<StandTree>{} : established_trees(scenario, clock),
               schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
   auto roots = options.resume ? make_root_zone(scenario, backend)
