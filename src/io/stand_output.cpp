@@ -9,16 +9,10 @@ namespace heliostand {
 StandOutput::Table::Table(const std::filesystem::path& final_path, std::optional<std::uint64_t> resume_at)
     : file(final_path), csv(stream) {
   if (resume_at) {
-    std::error_code error;
     // A run that stopped on an error (not killed) renamed its tables into place, without run.json: take them back.
     if (!std::filesystem::exists(file.temporary_path()) && std::filesystem::exists(file.final_path()))
       std::filesystem::rename(file.final_path(), file.temporary_path());
-    const auto written = std::filesystem::file_size(file.temporary_path(), error);
-    if (error || written < *resume_at)
-      throw OutputFolderError(fmt::format("cannot resume {}: the checkpoint counts {} bytes of it, the folder holds {}",
-                                          file.temporary_path().string(), *resume_at,
-                                          error ? std::string("none") : std::to_string(written)));
-    std::filesystem::resize_file(file.temporary_path(), *resume_at);
+    std::filesystem::resize_file(file.temporary_path(), *resume_at);  // resume_tables() checked the length
   }
   stream.open(file.temporary_path(), resume_at ? std::ios::app : std::ios::trunc);
   if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
@@ -56,6 +50,17 @@ StandOutput::StandOutput(const StandOutputOptions& options)
 }
 
 void StandOutput::resume_tables(const TableLengths& lengths) {
+  // Every table is checked before any is cut back: a checkpoint that does not fit leaves the folder as it was.
+  const std::array<const char*, 3> names{stand_table_file, trees_file, events_file};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto temporary = temporary_sibling(folder_.path_of(names[k]));
+    const auto held = std::filesystem::exists(temporary) ? temporary : folder_.path_of(names[k]);
+    std::error_code error;
+    const auto written = std::filesystem::file_size(held, error);
+    if (error || written < lengths[k])
+      throw OutputFolderError(fmt::format("cannot resume {}: the checkpoint counts {} bytes of it, the folder holds {}",
+                                          held.string(), lengths[k], error ? std::string("none") : std::to_string(written)));
+  }
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file), lengths[0]);
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file), lengths[1]);
   events_ = std::make_unique<Table>(folder_.path_of(events_file), lengths[2]);

@@ -123,7 +123,7 @@ TEST(CheckpointCli, AKilledRunResumesToTheUninterruptedOutputsAndBadCheckpointsA
   grow_and_kill(grow, out / "checkpoint_year_0004.hsck", out / ".stand_table.csv.tmp");
   ASSERT_FALSE(fs::exists(out / "run.json"));
   ASSERT_EQ(checkpoint_files(out).size(), 2u);
-  for (const char* copy : {"damaged", "truncated", "fallback", "foreign"})
+  for (const char* copy : {"damaged", "truncated", "fallback", "foreign", "short-table"})
     fs::copy(out, folder / copy, fs::copy_options::recursive);
 
   const auto resumed = run_cli(grow + " --resume -q");
@@ -150,16 +150,22 @@ TEST(CheckpointCli, AKilledRunResumesToTheUninterruptedOutputsAndBadCheckpointsA
     const auto run = run_cli(grow + extra + " --resume -q");
     EXPECT_NE(run.status, 0) << run.output;
     for (const char* file : {"checkpoint_year_0004.hsck", "checkpoint_year_0002.hsck"})
-      EXPECT_NE(run.output.find((out / file).string() + ": it " + reason), std::string::npos)
+      EXPECT_NE(run.output.find((out / file).string() + ": " + reason), std::string::npos)
           << reason << " not reported for " << file << ":\n" << run.output;
     EXPECT_NE(run.output.find("start it over with --force"), std::string::npos) << run.output;
     EXPECT_FALSE(fs::exists(out / "run.json"));
   };
   for (const auto& file : checkpoint_files(folder / "damaged")) flip_a_byte(file);
-  refused(folder / "damaged", "", "is damaged");
+  refused(folder / "damaged", "", "it is damaged");
   for (const auto& file : checkpoint_files(folder / "truncated")) fs::resize_file(file, fs::file_size(file) / 2);
-  refused(folder / "truncated", "", "is truncated");
-  refused(folder / "foreign", " --seed 8", "belongs to another run (foreign): its seed is 7, this run's is 8");
+  refused(folder / "truncated", "", "it is truncated");
+  refused(folder / "foreign", " --seed 8", "it belongs to another run (foreign): its seed is 7, this run's is 8");
+  // A table shorter than the checkpoints count (lost in a crash of the machine): refused, no table cut back.
+  const fs::path short_table = folder / "short-table";
+  fs::resize_file(short_table / ".trees.csv.tmp", 10);
+  const auto stand_table_bytes = fs::file_size(short_table / ".stand_table.csv.tmp");
+  refused(short_table, "", "cannot resume " + (out / ".trees.csv.tmp").string() + ": the checkpoint counts");
+  EXPECT_EQ(fs::file_size(out / ".stand_table.csv.tmp"), stand_table_bytes);
 }
 
 }  // namespace
