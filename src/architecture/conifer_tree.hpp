@@ -12,6 +12,7 @@
 #include "architecture/branch_axis.hpp"
 #include "architecture/shoot.hpp"
 #include "architecture/species.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -113,6 +114,7 @@ class ConiferTree {
   const std::array<double, 8>& branching_bonus() const { return branching_bonus_; }
 
  private:
+  friend struct checkpoint::Access;
   void grow_diameter(double open_grown_height_m);
   double elongation_factor(int shoot_index) const;
   double stem_scale(const StemTaper& taper) const;  // this tree's DBH over the taper's

@@ -1,4 +1,5 @@
-// heliostand grow SCENARIO --out DIR: establish the surveyed stand and grow it year by year.
+// heliostand grow SCENARIO --out DIR: establish the surveyed stand and grow it year by year; with
+// --checkpoint-every N it saves its state every N years, and --resume continues a killed run from it.
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -20,6 +21,8 @@ struct GrowArguments {
   std::optional<int> years;
   std::string device;
   bool no_vtk = false;
+  int checkpoint_every = 0;
+  bool resume = false;
   std::string command_line;
 };
 
@@ -37,6 +40,8 @@ int grow(const GrowArguments& arguments) {
   options.write_vtk = !arguments.no_vtk;
   options.show_progress = ::isatty(STDERR_FILENO) == 1;
   options.command_line = arguments.command_line;
+  options.checkpoint_every_years = arguments.checkpoint_every;
+  options.resume = arguments.resume;
   const SimulationSummary summary = run_simulation(scenario, options);
   spdlog::info("grew age {} -> {}: {} alive, {} removed, {} dead; {:.1f} s ({:.1f} s light) -> {}",
                summary.first_stand_age, summary.last_stand_age, summary.trees_alive, summary.trees_removed,
@@ -65,6 +70,13 @@ void add_grow_command(CLI::App& app, int& status) {
         }
       });
   command->add_flag("--no-vtk", arguments->no_vtk, "Write the tables only (batch forecasts)");
+  command->add_option("--checkpoint-every", arguments->checkpoint_every,
+                      "Write a checkpoint after every N simulated years (the newest two are kept)")
+      ->check(CLI::PositiveNumber);
+  auto* resume = command->add_flag("--resume", arguments->resume,
+                                   "Continue the interrupted run in --out from its newest usable checkpoint "
+                                   "(same scenario and options)");
+  resume->excludes("--force");
   command->callback([arguments, &status] {
     arguments->command_line = invoked_command_line();
     status = report_errors([&] { return grow(*arguments); });

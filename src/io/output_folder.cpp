@@ -51,7 +51,11 @@ void clear_folder(const fs::path& folder) {
 
 }  // namespace
 
-OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
+OutputFolder::OutputFolder(fs::path root, bool force, bool resume) : root_(std::move(root)) {
+  if (resume) {
+    take_over_for_resume();
+    return;
+  }
   std::error_code error;
   if (fs::exists(root_, error)) {
     if (!fs::is_directory(root_)) {
@@ -81,6 +85,30 @@ OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
   std::ofstream marker(root_ / marker_name);
   marker << "This folder holds the output of a heliostand run; `--force` may delete its contents.\n";
   if (!marker) throw OutputFolderError(fmt::format("cannot write into output folder {}", root_.string()));
+}
+
+void OutputFolder::take_over_for_resume() {
+  if (!fs::is_directory(root_))
+    throw OutputFolderError(fmt::format("cannot resume: output folder {} does not exist", root_.string()));
+  if (!fs::exists(root_ / marker_name))
+    throw OutputFolderError(fmt::format("cannot resume: output folder {} does not hold a heliostand run (no {} file)",
+                                        root_.string(), marker_name));
+  if (fs::exists(root_ / "run.json"))
+    throw OutputFolderError(fmt::format("cannot resume: the run in {} has finished (it has its run.json); pass "
+                                        "--force instead of --resume to grow it again",
+                                        root_.string()));
+}
+
+void OutputFolder::remove_stray_temporaries(const std::vector<fs::path>& keep) {
+  std::vector<fs::path> stray;
+  for (auto entry = fs::recursive_directory_iterator(root_); entry != fs::recursive_directory_iterator(); ++entry) {
+    const std::string name = entry->path().filename().string();
+    const bool temporary = name.size() > 5 && name.front() == '.' && name.ends_with(".tmp");
+    if (!temporary || std::find(keep.begin(), keep.end(), entry->path()) != keep.end()) continue;
+    stray.push_back(entry->path());
+    if (entry->is_directory()) entry.disable_recursion_pending();
+  }
+  for (const fs::path& path : stray) fs::remove_all(path);
 }
 
 void OutputFolder::write_file(const fs::path& relative, std::string_view contents) {

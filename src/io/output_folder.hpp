@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "io/checkpoint_access.hpp"
+
 namespace heliostand {
 
 class OutputFolderError : public std::runtime_error {
@@ -49,7 +51,8 @@ class OutputFolder {
 
   // Creates `root` (with parents). An existing non-empty folder is refused unless `force`; with
   // `force` its contents are deleted, but only if it carries the marker of an earlier run.
-  OutputFolder(std::filesystem::path root, bool force);
+  // `resume`: take over the folder of an interrupted run as it is (it must carry the marker and no run.json).
+  OutputFolder(std::filesystem::path root, bool force, bool resume = false);
 
   const std::filesystem::path& root() const { return root_; }
   std::filesystem::path path_of(const std::filesystem::path& relative) const { return root_ / relative; }
@@ -61,7 +64,14 @@ class OutputFolder {
   void record_output(const std::filesystem::path& relative);
   const std::vector<std::string>& output_files() const { return outputs_; }
 
+  // Deletes every temporary (".name.tmp", io/output_folder.hpp) under the folder but those in `keep`: what a
+  // killed run was writing. A resumed run starts from its checkpoint and writes them again.
+  void remove_stray_temporaries(const std::vector<std::filesystem::path>& keep);
+
  private:
+  friend struct checkpoint::Access;
+  void take_over_for_resume();
+
   std::filesystem::path root_;
   std::vector<std::string> outputs_;
 };

@@ -6,8 +6,15 @@
 
 namespace heliostand {
 
-StandOutput::Table::Table(const std::filesystem::path& final_path)
-    : file(final_path), stream(file.temporary_path(), std::ios::trunc), csv(stream) {
+StandOutput::Table::Table(const std::filesystem::path& final_path, std::optional<std::uint64_t> resume_at)
+    : file(final_path), csv(stream) {
+  if (resume_at) {
+    // A run that stopped on an error (not killed) renamed its tables into place, without run.json: take them back.
+    if (!std::filesystem::exists(file.temporary_path()) && std::filesystem::exists(file.final_path()))
+      std::filesystem::rename(file.final_path(), file.temporary_path());
+    std::filesystem::resize_file(file.temporary_path(), *resume_at);  // resume_tables() checked the length
+  }
+  stream.open(file.temporary_path(), resume_at ? std::ios::app : std::ios::trunc);
   if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
 }
 
@@ -24,9 +31,16 @@ double checked_plot_area(double plot_area_m2) {
 
 StandOutput::StandOutput(const StandOutputOptions& options)
     : plot_area_m2_(checked_plot_area(options.plot_area_m2)),
-      folder_(options.folder, options.force),
+      folder_(options.folder, options.force, options.resume),
       ledger_(plot_area_m2_ / kSquareMetresPerHectare) {
   if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
+  if (options.resume) {
+    // What the killed run was writing when it died (a VTK year, a checkpoint) is not part of any checkpoint.
+    folder_.remove_stray_temporaries({temporary_sibling(folder_.path_of(stand_table_file)),
+                                      temporary_sibling(folder_.path_of(trees_file)),
+                                      temporary_sibling(folder_.path_of(events_file))});
+    return;  // the tables are reopened by resume_tables()
+  }
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file));
   events_ = std::make_unique<Table>(folder_.path_of(events_file));
@@ -35,8 +49,25 @@ StandOutput::StandOutput(const StandOutputOptions& options)
   write_events_header(events_->csv);
 }
 
+void StandOutput::resume_tables(const TableLengths& lengths) {
+  // Every table is checked before any is cut back: a checkpoint that does not fit leaves the folder as it was.
+  const std::array<const char*, 3> names{stand_table_file, trees_file, events_file};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto temporary = temporary_sibling(folder_.path_of(names[k]));
+    const auto held = std::filesystem::exists(temporary) ? temporary : folder_.path_of(names[k]);
+    std::error_code error;
+    const auto written = std::filesystem::file_size(held, error);
+    if (error || written < lengths[k])
+      throw OutputFolderError(fmt::format("cannot resume {}: the checkpoint counts {} bytes of it, the folder holds {}",
+                                          held.string(), lengths[k], error ? std::string("none") : std::to_string(written)));
+  }
+  stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file), lengths[0]);
+  trees_ = std::make_unique<Table>(folder_.path_of(trees_file), lengths[1]);
+  events_ = std::make_unique<Table>(folder_.path_of(events_file), lengths[2]);
+}
+
 StandOutput::~StandOutput() {
-  if (finished_) return;
+  if (finished_ || !stand_table_) return;
   try {
     close_tables();
   } catch (...) {

@@ -8,7 +8,10 @@
 // Tables are streamed to hidden temporaries (".trees.csv.tmp") and renamed at finish(). If the run
 // throws, the destructor still renames them (their rows are complete up to the last written year), but
 // no run.json is written: its absence marks the run as unfinished.
+#include <array>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <memory>
 #include <span>
@@ -21,6 +24,7 @@
 #include "io/tree_event.hpp"
 #include "io/vtk_time_series_writer.hpp"
 #include "stand/stand_table_ledger.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -29,6 +33,9 @@ struct StandOutputOptions {
   bool force = false;        // replace an earlier heliostand run in `folder`
   double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
   bool write_vtk = true;     // false: tables only (batch forecasts)
+  // Take over the folder of an interrupted run (OutputFolder's resume); the tables are reopened by a checkpoint
+  // (io/checkpoint_state.hpp), which cuts them back to the rows it counts, instead of being started afresh.
+  bool resume = false;
 };
 
 class StandOutput {
@@ -37,6 +44,7 @@ class StandOutput {
   static constexpr const char* trees_file = "trees.csv";
   static constexpr const char* events_file = "events.csv";
   static constexpr const char* manifest_file = "run.json";
+  using TableLengths = std::array<std::uint64_t, 3>;  // bytes of stand_table, trees, events
 
   explicit StandOutput(const StandOutputOptions& options);
   ~StandOutput();
@@ -54,12 +62,16 @@ class StandOutput {
   VtkTimeSeriesWriter* vtk() { return vtk_.get(); }   // to add blocks; null when VTK output is off
 
  private:
+  friend struct checkpoint::Access;
   struct Table {
     AtomicFile file;
     std::ofstream stream;
     CsvWriter csv;
-    explicit Table(const std::filesystem::path& final_path);
+    // `resume_at`: reopen the temporary an interrupted run left, cut back to that many bytes, and append.
+    explicit Table(const std::filesystem::path& final_path, std::optional<std::uint64_t> resume_at = std::nullopt);
   };
+
+  void resume_tables(const TableLengths& lengths);
 
   void close_tables();
 

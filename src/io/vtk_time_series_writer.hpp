@@ -30,6 +30,7 @@ class VtkTimeSeriesWriter {
   static std::filesystem::path year_file(int stand_age);
 
  private:
+  friend struct checkpoint::Access;
   OutputFolder& folder_;
   std::vector<StandBlock> blocks_;
   PvdCollection collection_;

@@ -22,6 +22,7 @@
 #include "roots/root_parameters.hpp"
 #include "roots/root_segment.hpp"
 #include "roots/soil_grid.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand::roots {
 
@@ -92,6 +93,7 @@ class RootSystem {
   double total_length_m() const;
 
  private:
+  friend struct checkpoint::Access;
   void remove_dead_and_compact();
   void sprout_fine_roots(int segment, RandomStream& random, std::vector<RootBud>& buds) const;
 

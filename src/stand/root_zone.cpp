@@ -177,12 +177,17 @@ vtkSmartPointer<vtkImageData> RootZone::soil_block() const { return roots::soil_
 
 namespace heliostand {
 
-std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
-                                            const compute::ComputeBackend& backend) {
+std::optional<RootZone> make_root_zone(const Scenario& scenario, const compute::ComputeBackend& backend) {
   if (!scenario.roots.enabled) return std::nullopt;
   std::optional<RootZone> zone;
   zone.emplace(scenario.roots, scenario.stand.plot, scenario.run.seed, scenario.light.sky_scale, backend);
-  zone->establish(stand);
+  return zone;
+}
+
+std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
+                                            const compute::ComputeBackend& backend) {
+  auto zone = make_root_zone(scenario, backend);
+  if (zone) zone->establish(stand);
   return zone;
 }
 

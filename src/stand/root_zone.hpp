@@ -29,6 +29,7 @@
 #include "scenario/roots_settings.hpp"
 #include "stand/stand.hpp"
 #include "survey/plot_bounds.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -67,6 +68,7 @@ class RootZone {
   vtkSmartPointer<vtkImageData> soil_block() const;
 
  private:
+  friend struct checkpoint::Access;
   void drop_gone_trees(const Stand& stand);
   void prune(const Stand& stand);
   void grow_roots_of(const std::vector<roots::RootSystem*>& trees, int year);
@@ -89,6 +91,10 @@ namespace heliostand {
 
 struct Scenario;
 class VtkTimeSeriesWriter;
+
+// The stand's root zone as the scenario asks, not yet spun up (a resumed run restores it from a checkpoint);
+// nullopt when roots are off.
+std::optional<RootZone> make_root_zone(const Scenario& scenario, const compute::ComputeBackend& backend);
 
 // The stand's root zone as the scenario asks ([roots] enabled, soil, coupling, pruning), established
 // (spun up) under the stand, its root-contact field on `backend`; nullopt when roots are off.

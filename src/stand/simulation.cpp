@@ -6,11 +6,13 @@
 #include <spdlog/spdlog.h>
 
 #include "compute/compute_backend.hpp"
+#include "io/checkpoint_state.hpp"
 #include "io/stand_output.hpp"
 #include "light/make_light_solver.hpp"
 #include "stand/establishment.hpp"
 #include "stand/progress.hpp"
 #include "stand/root_zone.hpp"
+#include "stand/run_checkpoints.hpp"
 #include "stand/stage_clock.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
@@ -51,6 +53,24 @@ CompetitionNeighbourhood competition_for(const Scenario& scenario) {
           StandEdges{light.periodic, PlotBounds{light.plot_x_min, light.plot_y_min, light.plot_x_max, light.plot_y_max}}};
 }
 
+// The state after simulated year `year`, written atomically; the oldest beyond the kept ones are deleted.
+int write_checkpoint(const std::filesystem::path& folder, int year, const checkpoint::RunIdentity& identity,
+                     const checkpoint::RunParts& parts) {
+  const auto path = checkpoint::write_checkpoint(folder, {year, identity, checkpoint::save_run(parts)});
+  checkpoint::prune_checkpoints(folder, checkpoints_kept);
+  spdlog::debug("checkpoint after year {}: {}", year, path.string());
+  return 0;
+}
+
+std::vector<StandTree> established_trees(const Scenario& scenario, StageClock& clock) {
+  EstablishmentReport report;
+  auto trees = clock.time("establishment", [&] { return establish_stand(scenario, report); });
+  spdlog::info("established {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
+               trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
+               report.unusable);
+  return trees;
+}
+
 long living_tree_count(const Stand& stand) {
   return std::count_if(stand.trees().begin(), stand.trees().end(), [](const StandTree& tree) { return tree.alive(); });
 }
@@ -89,30 +109,48 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
   auto open_grown_solver = make_light_solver(backend, open_grown);
-  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
+  // Read before the folder is taken: an identity that cannot be formed must not leave a folder behind.
+  const checkpoint::RunIdentity identity = options.checkpoint_every_years > 0 || options.resume
+                                               ? run_identity(scenario, backend.name(), options.write_vtk)
+                                               : checkpoint::RunIdentity{};
+  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk,
+                      options.resume});
 
   StageClock clock;
-  EstablishmentReport report;
-  auto trees = clock.time("establishment", [&] { return establish_stand(scenario, report); });
-  spdlog::info("established {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
-               trees.size(), scenario.stand.age_at_survey_years, report.fitted, report.crown_base_off,
-               report.unusable);
-  Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, std::move(trees),
+  // A resumed run's stand and roots come from its checkpoint: they start empty and are not spun up.
+  Stand stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years,
+              options.resume ? std::vector<StandTree>{} : established_trees(scenario, clock),
               schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
-  auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
+  auto roots = options.resume ? make_root_zone(scenario, backend)
+                              : clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
   if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
 
-  ProgressLine progress(scenario.run.years, options.show_progress);
   StandYear simulated_year(stand, *solver, *open_grown_solver, roots ? &*roots : nullptr, &output,
                            {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,
                             scenario.run.output_interval_years},
                            clock);
-  long tree_years = 0;
-  for (int year = 0; year <= scenario.run.years; ++year) {
-    if (year > 0) tree_years += living_tree_count(stand);  // the trees that grow this year
+  checkpoint::RunProgress run_progress{0, 0.0, manifest.started_utc, options.command_line};
+  const checkpoint::RunParts parts{stand, roots ? &*roots : nullptr, output, simulated_year, clock, run_progress};
+  int first_year = 0;
+  if (options.resume)
+    first_year = 1 + resume_from_newest(options.output_folder, identity, [&](const checkpoint::CheckpointFile& file) {
+      checkpoint::load_run(file.payload, scenario, parts);
+    });
+  const double earlier_wall_seconds = run_progress.wall_seconds;  // of the sessions before a resume
+  auto wall_seconds = [&] {
+    return earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+
+  ProgressLine progress(scenario.run.years, options.show_progress);
+  for (int year = first_year; year <= scenario.run.years; ++year) {
+    if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
     if (options.observe_year) options.observe_year(stand, year);
+    if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years)) {
+      run_progress.wall_seconds = wall_seconds();
+      clock.time("checkpoint", [&] { return write_checkpoint(options.output_folder, year, identity, parts); });
+    }
     progress.update(year);
   }
   progress.finish();
@@ -121,14 +159,16 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   summary.first_stand_age = scenario.stand.age_at_survey_years;
   summary.last_stand_age = stand.stand_age();
   count_trees(stand, roots ? &*roots : nullptr, summary);
-  summary.tree_years = tree_years;
+  summary.tree_years = run_progress.tree_years;
   summary.device = solver->name();
   summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
   summary.stage_seconds = clock.stages();
   summary.light_seconds = clock.seconds("light");
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary.wall_seconds = wall_seconds();
 
-  manifest.command_line = options.command_line;
+  // A resumed run records the run it continues: its first command and start (docs/user-guide.md).
+  manifest.started_utc = run_progress.started_utc;
+  manifest.command_line = run_progress.command_line;
   manifest.scenario_path = scenario.file.string();
   manifest.seed = scenario.run.seed;
   manifest.device = backend.name();
@@ -138,6 +178,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   manifest.wall_seconds = summary.wall_seconds;
   manifest.finished_utc = utc_now_iso8601();
   output.finish(std::move(manifest));
+  // The run is finished (run.json written): nothing will resume it.
+  checkpoint::prune_checkpoints(options.output_folder, 0);
   return summary;
 }
 

@@ -20,6 +20,10 @@ struct SimulationOptions {
   bool write_vtk = true;
   bool show_progress = false;  // a progress line on stderr (the CLI turns it on for terminals)
   std::string command_line;    // recorded in run.json
+  // Write a checkpoint after every this many simulated years (0: none; stand/run_checkpoints.hpp).
+  int checkpoint_every_years = 0;
+  // Continue the interrupted run in output_folder from its newest usable checkpoint instead of starting afresh.
+  bool resume = false;
   // Called with the stand at the end of every year of the loop (after thinning; year 0 = the established
   // stand): lets validation programs measure crowns without re-reading the outputs.
   std::function<void(const Stand&, int year)> observe_year;

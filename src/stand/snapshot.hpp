@@ -4,6 +4,7 @@
 #include "io/stand_snapshot.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_table_ledger.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -23,6 +24,7 @@ class SnapshotTracker {
   bool written_as_gone(std::size_t index) const { return index < written_as_gone_.size() && written_as_gone_[index]; }
 
  private:
+  friend struct checkpoint::Access;
   bool mesh_trunks_;
   std::vector<bool> written_as_gone_;
 };

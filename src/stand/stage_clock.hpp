@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/checkpoint_access.hpp"
+
 namespace heliostand {
 
 class StageClock {
@@ -28,6 +30,7 @@ class StageClock {
   const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
 
  private:
+  friend struct checkpoint::Access;
   void add(const std::string& stage, std::chrono::steady_clock::duration elapsed) {
     const double seconds = std::chrono::duration<double>(elapsed).count();
     for (auto& [name, value] : stages_)

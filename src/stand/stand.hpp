@@ -14,6 +14,7 @@
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
 #include "stand/thinning_trigger.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -72,6 +73,7 @@ class Stand {
   const CompetitionNeighbourhood& competition() const { return competition_; }
 
  private:
+  friend struct checkpoint::Access;
   StandMeasures measures() const;
   std::vector<TreeEvent> apply(const ScheduledThinning& event, const std::string& why);
   std::vector<ThinningCandidate> candidates_for(const ScheduledThinning& event, const std::vector<std::size_t>& living) const;

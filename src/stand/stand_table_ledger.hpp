@@ -16,6 +16,7 @@
 #include "io/tree_event.hpp"
 #include "stand/mortality.hpp"
 #include "stand/stand_metrics.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -70,6 +71,7 @@ class StandTableLedger {
   std::vector<StandTableRow> rows_of_year(const StandInventory& inventory, std::span<const TreeEvent> events_of_year);
 
  private:
+  friend struct checkpoint::Access;
   struct Production {
     double gone_volume_m3_per_ha = 0;  // removed or dead since the survey, up to the latest row's year
     double last_total_m3_per_ha = std::numeric_limits<double>::quiet_NaN();

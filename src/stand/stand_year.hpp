@@ -21,6 +21,7 @@
 #include "stand/snapshot.hpp"
 #include "stand/stage_clock.hpp"
 #include "stand/stand.hpp"
+#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -47,6 +48,7 @@ class StandYear {
   bool is_output_year(int year) const;
 
  private:
+  friend struct checkpoint::Access;
   void write_outputs(int year);
 
   Stand& stand_;
