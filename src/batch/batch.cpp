@@ -112,7 +112,10 @@ int run_batch(const BatchOptions& options) {
   if (ranks.rank() == 0) {
     std::vector<RunResult> results;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      results.push_back({&runs[i], statuses[i], failure_reason(statuses[i], root / runs[i].log_file())});
+      // A run no rank could start (its job threw before the process ran) is reported as not run.
+      results.push_back({&runs[i], statuses[i],
+                         statuses[i] == not_run_here ? "not run: the batch could not start it (see its log above)"
+                                                     : failure_reason(statuses[i], root / runs[i].log_file())});
     }
     write_batch_summary(root, results);
     if (failed == 0) {
