@@ -28,14 +28,15 @@ set_tests_properties(cli.batch.restart_completes_unfinished_runs PROPERTIES FIXT
                      TIMEOUT 300 RESOURCE_LOCK heliostand_batch_root ENVIRONMENT "${BATCH_ENV}")
 
 if(MPI_CXX_FOUND AND MPIEXEC_EXECUTABLE)
-  # Open MPI refuses to start as root (CI's container) without the two OMPI_ALLOW_* variables.
+  # Open MPI refuses to start as root (CI's container) without the two OMPI_ALLOW_* variables; containers also
+  # forbid the shared-memory transport's single-copy mechanism (ptrace), which the ranks do not need.
   add_test(NAME cli.batch.mpi_ranks
            COMMAND ${BATCH_AT_ROOT} ${BATCH_TESTS}/mpi fresh
                    ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --oversubscribe
                    $<TARGET_FILE:heliostand> batch ${BATCH_SOURCES}/two_stands.toml --out ${BATCH_TESTS}/root)
   set_tests_properties(cli.batch.mpi_ranks PROPERTIES FIXTURES_SETUP heliostand_batch_mpi TIMEOUT 300
                        RESOURCE_LOCK heliostand_batch_root
-                       ENVIRONMENT "${BATCH_ENV};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+                       ENVIRONMENT "${BATCH_ENV};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_btl_vader_single_copy_mechanism=none")
   add_test(NAME cli.batch.mpi_equals_local_pool
            COMMAND python3 ${BATCH_DRIVER} same ${BATCH_TESTS}/local ${BATCH_TESTS}/mpi)
   set_tests_properties(cli.batch.mpi_equals_local_pool PROPERTIES
