@@ -43,6 +43,7 @@ int run(int argc, char** argv) {
   add_grow_command(app, status);
   add_kanamaru_command(app, status);
   add_report_command(app, status);
+  add_batch_command(app, status);
   add_devices_command(app);
   add_bench_command(app);
 

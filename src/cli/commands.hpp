@@ -12,6 +12,7 @@ void add_check_command(CLI::App& app, int& status);
 void add_grow_command(CLI::App& app, int& status);
 void add_kanamaru_command(CLI::App& app, int& status);
 void add_report_command(CLI::App& app, int& status);
+void add_batch_command(CLI::App& app, int& status);
 
 // The command line as typed (argv joined by spaces), for run.json.
 const std::string& invoked_command_line();

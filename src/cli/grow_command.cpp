@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "compute/device_choice.hpp"
 #include "scenario/scenario.hpp"
+#include "stand/memory_estimate.hpp"
 #include "stand/simulation.hpp"
 
 namespace heliostand::cli {
@@ -32,6 +33,9 @@ int grow(const GrowArguments& arguments) {
   if (arguments.seed) scenario.set_seed(*arguments.seed);
   if (arguments.years) scenario.set_years(*arguments.years);
   for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+  // A stand far beyond the machine's memory is refused now, not after hours of growth.
+  const MemoryEstimate memory = estimate_run_memory(scenario);
+  if (const auto usable = usable_memory_bytes()) refuse_beyond_memory(scenario, memory, *usable);
 
   SimulationOptions options;
   options.output_folder = arguments.out;

@@ -1,0 +1,44 @@
+// The up-front memory estimate (stand/memory_estimate.hpp): its formula, and a refusal that names the figures.
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+#include "scenario/scenario.hpp"
+#include "stand/memory_estimate.hpp"
+
+namespace heliostand {
+namespace {
+
+constexpr std::uint64_t mib = 1024ull * 1024ull;
+constexpr std::uint64_t gib = 1024ull * mib;
+
+Scenario tiny() { return load_scenario(std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/scenario.toml"); }
+
+TEST(MemoryEstimate, IsOneGibibytePlusAPerTreeFigure) {
+  const MemoryEstimate estimate = estimate_run_memory(tiny());
+  EXPECT_EQ(estimate.trees, 8u);
+  EXPECT_EQ(estimate.bytes, gib + 8 * mib * 7 / 4);  // 1 GiB + 8 × 1.75 MiB
+}
+
+TEST(MemoryEstimate, AStandBeyondTheMachineIsRefusedWithTheEstimate) {
+  const Scenario scenario = tiny();
+  const MemoryEstimate estimate = estimate_run_memory(scenario);
+  EXPECT_NO_THROW(refuse_beyond_memory(scenario, estimate, 64 * gib));
+  EXPECT_NO_THROW(refuse_beyond_memory(scenario, estimate, estimate.bytes));
+  try {
+    refuse_beyond_memory(scenario, estimate, gib);
+    FAIL() << "an estimate above the usable memory must be refused";
+  } catch (const InputError& error) {
+    const std::string message = error.problems().at(0).format(error.field_kind());
+    EXPECT_NE(message.find("key 'stand.survey': 8 trees need about 1.0 GiB"), std::string::npos) << message;
+    EXPECT_NE(message.find("than the 1.0 GiB"), std::string::npos) << message;
+  }
+}
+
+TEST(MemoryEstimate, UsableMemoryIsKnownOnLinux) {
+  const auto usable = usable_memory_bytes();
+  ASSERT_TRUE(usable.has_value());
+  EXPECT_GT(*usable, 64 * mib);
+}
+
+}  // namespace
+}  // namespace heliostand
