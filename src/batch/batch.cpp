@@ -14,6 +14,7 @@
 #include "batch/mpi_ranks.hpp"
 #include "batch/run_process.hpp"
 #include "batch/worker_pool.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/input_error.hpp"
 #include "io/output_folder.hpp"
 
@@ -24,17 +25,25 @@ namespace {
 
 constexpr int not_run_here = INT_MIN;  // a run's status on the ranks that did not run it (MPI max ignores it)
 
+// How every run of the batch is grown (the batch's options over the manifest's).
+struct GrowSettings {
+  bool write_vtk = true;
+  std::optional<std::string> device;
+  int checkpoint_every = 0;  // years; 0: no checkpoints
+};
+
 // The child's command line. Paths are relative to the root, where the child runs, so a run's run.json
-// (command_line, scenario) is the same wherever the root is and whichever rank ran it.
-std::vector<std::string> grow_arguments(const BatchRun& run, bool write_vtk, const std::optional<std::string>& device) {
+// (command_line, scenario) is the same wherever the root is and whichever rank ran it. An unfinished run's folder
+// (no run.json) holds the marker of its first try: it is grown again with --force, or continued with --resume
+// where its first try left a checkpoint (--checkpoint-every), which ends in the same outputs.
+std::vector<std::string> grow_arguments(const BatchRun& run, const GrowSettings& settings, bool resume) {
   std::vector<std::string> arguments{"heliostand", "-q", "grow", run.scenario_file().generic_string(),
                                      "--out", run.folder().generic_string(), "--seed", std::to_string(run.seed),
-                                     // An unfinished run's folder (no run.json) holds the marker of its first try.
-                                     // Here is where resuming would go: `--resume` instead of `--force` when the
-                                     // folder holds a checkpoint.
-                                     "--force"};
-  if (!write_vtk) arguments.push_back("--no-vtk");
-  if (device) arguments.insert(arguments.end(), {"--device", *device});
+                                     resume ? "--resume" : "--force"};
+  if (!settings.write_vtk) arguments.push_back("--no-vtk");
+  if (settings.device) arguments.insert(arguments.end(), {"--device", *settings.device});
+  if (settings.checkpoint_every > 0)
+    arguments.insert(arguments.end(), {"--checkpoint-every", std::to_string(settings.checkpoint_every)});
   return arguments;
 }
 
@@ -62,7 +71,7 @@ void prepare_root_on_first_rank(const MpiRanks& ranks, const fs::path& root, con
 }
 
 std::vector<int> run_my_share(const MpiRanks& ranks, const fs::path& root, const std::vector<BatchRun>& runs,
-                              unsigned jobs, bool write_vtk, const std::optional<std::string>& device) {
+                              unsigned jobs, const GrowSettings& settings) {
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (static_cast<int>(i % static_cast<std::size_t>(ranks.size())) == ranks.rank()) mine.push_back(i);
@@ -76,8 +85,9 @@ std::vector<int> run_my_share(const MpiRanks& ranks, const fs::path& root, const
       statuses[mine[k]] = 0;
       return JobReport{run.id(), true, "finished earlier, kept"};
     }
+    const bool resume = settings.checkpoint_every > 0 && !checkpoint::checkpoints_in(root / run.folder()).empty();
     const ProcessOutcome outcome =
-        run_process(program, grow_arguments(run, write_vtk, device), root, root / run.log_file());
+        run_process(program, grow_arguments(run, settings, resume), root, root / run.log_file());
     statuses[mine[k]] = outcome.exit_status;
     return JobReport{run.id(), outcome.exit_status == 0,
                      outcome.exit_status == 0 ? fmt::format("in {}", human_duration(outcome.seconds)) : outcome.error};
@@ -104,8 +114,9 @@ int run_batch(const BatchOptions& options) {
                  options.manifest.string(), runs.size(), manifest.stands.size(), manifest.scenarios.size(),
                  manifest.seeds.size(), ranks.size(), jobs, root.string());
   }
-  const bool write_vtk = manifest.write_vtk && !options.no_vtk;
-  std::vector<int> statuses = run_my_share(ranks, root, runs, jobs, write_vtk, options.device ? options.device : manifest.device);
+  const GrowSettings settings{manifest.write_vtk && !options.no_vtk, options.device ? options.device : manifest.device,
+                              options.checkpoint_every};
+  std::vector<int> statuses = run_my_share(ranks, root, runs, jobs, settings);
   ranks.max_over_ranks(statuses);
 
   const std::size_t failed = static_cast<std::size_t>(std::count_if(statuses.begin(), statuses.end(), [](int s) { return s != 0; }));

@@ -14,6 +14,7 @@ struct BatchOptions {
   bool force = false;                        // delete an earlier batch in the root and start over
   bool no_vtk = false;                       // tables only (overrides the manifest's `vtk = true`)
   std::optional<std::string> device;         // overrides the manifest's and the scenarios' device
+  int checkpoint_every = 0;                  // years between each run's checkpoints; a restarted batch resumes from them
 };
 
 // Returns the exit status: 0 every run finished, 1 a run failed (the others still ran), 2 bad manifest or

@@ -19,6 +19,10 @@ void add_batch_command(CLI::App& app, int& status) {
   command->add_flag("-f,--force", options->force, "Delete an earlier batch in the output root and start over");
   command->add_flag("--no-vtk", options->no_vtk, "Write the tables only");
   command->add_option("--device", *device, "Device of every run (overrides the manifest and the scenarios)");
+  command->add_option("--checkpoint-every", options->checkpoint_every,
+                      "Each run writes a checkpoint after every N years; the batch started again resumes its "
+                      "unfinished runs from them (grow --resume) instead of growing them anew")
+      ->check(CLI::PositiveNumber);
   command->callback([=, &status] {
     options->manifest = *manifest;
     if (!out->empty()) options->out = *out;

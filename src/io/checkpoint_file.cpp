@@ -77,9 +77,11 @@ std::string encode(const CheckpointFile& file) {
 }  // namespace
 
 std::string RunIdentity::difference_from(const RunIdentity& other) const {
-  for (const auto& [key, value] : entries) {
+  for (const auto& entry : entries) {
+    const std::string& key = entry.first;  // a named variable: clang 14 cannot capture a structured binding
+    const std::string& value = entry.second;
     const auto theirs = std::find_if(other.entries.begin(), other.entries.end(),
-                                     [&](const auto& entry) { return entry.first == key; });
+                                     [&key](const auto& candidate) { return candidate.first == key; });
     if (theirs == other.entries.end()) return fmt::format("it records no {}", key);
     if (theirs->second != value)
       return fmt::format("its {} is {}, this run's is {}", key, theirs->second, value);
