@@ -26,7 +26,7 @@ StandOutput::StandOutput(const StandOutputOptions& options)
     : plot_area_m2_(checked_plot_area(options.plot_area_m2)),
       folder_(options.folder, options.force),
       ledger_(plot_area_m2_ / kSquareMetresPerHectare) {
-  if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_);
+  if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_, stand_blocks(options.detail));
   stand_table_ = std::make_unique<Table>(folder_.path_of(stand_table_file));
   trees_ = std::make_unique<Table>(folder_.path_of(trees_file));
   events_ = std::make_unique<Table>(folder_.path_of(events_file));

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/csv_writer.hpp"
+#include "io/output_detail.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_manifest.hpp"
 #include "io/stand_snapshot.hpp"
@@ -29,6 +30,7 @@ struct StandOutputOptions {
   bool force = false;        // replace an earlier heliostand run in `folder`
   double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
   bool write_vtk = true;     // false: tables only (batch forecasts)
+  OutputDetail detail = OutputDetail::full;  // the VTK blocks (io/output_detail.hpp)
 };
 
 class StandOutput {

@@ -89,7 +89,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
   auto open_grown_solver = make_light_solver(backend, open_grown);
-  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk});
+  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk,
+                      scenario.run.output_detail});
 
   StageClock clock;
   EstablishmentReport report;
@@ -101,7 +102,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
               schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
   auto roots = clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
-  if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
+  if (roots && output.vtk() && scenario.run.roots_output_interval_years > 0)
+    add_root_blocks(*output.vtk(), *roots, scenario.run.roots_output_interval_years);
 
   ProgressLine progress(scenario.run.years, options.show_progress);
   StandYear simulated_year(stand, *solver, *open_grown_solver, roots ? &*roots : nullptr, &output,
