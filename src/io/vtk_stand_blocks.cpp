@@ -228,7 +228,12 @@ std::vector<StandBlock> stand_blocks(OutputDetail detail) {
     return StandBlock{name, [build](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build(s); }};
   };
   switch (detail) {
-    case OutputDetail::full: return default_stand_blocks();
+    case OutputDetail::full: {
+      // The model's own view, and around each crown its envelope (issue 15: a crown a person recognises).
+      std::vector<StandBlock> blocks = default_stand_blocks();
+      blocks.push_back(block("crown_envelope", build_crown_envelope_block));
+      return blocks;
+    }
     case OutputDetail::envelope:
       return {block("trees", build_trees_block), block("stem", build_stem_block),
               block("crown_envelope", build_crown_envelope_block)};

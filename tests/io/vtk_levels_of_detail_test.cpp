@@ -39,7 +39,8 @@ std::vector<std::string> block_names(const fs::path& vtm) {
   auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
   std::vector<std::string> names;
   for (unsigned i = 0; i < multiblock->GetNumberOfBlocks(); ++i)
-    names.emplace_back(multiblock->GetMetaData(i)->Get(vtkCompositeDataSet::NAME()));
+    if (multiblock->GetBlock(i) != nullptr)  // an empty block is an unnamed placeholder in the file
+      names.emplace_back(multiblock->GetMetaData(i)->Get(vtkCompositeDataSet::NAME()));
   return names;
 }
 
@@ -77,17 +78,15 @@ class LevelsOfDetail : public ::testing::Test {
 
 TEST_F(LevelsOfDetail, EachLevelWritesItsBlocks) {
   const std::map<OutputDetail, std::vector<std::string>> expected = {
-      {OutputDetail::full, {"branches", "leaf_balls", "trees", "trunk"}},
+      // full also has `trunk`, but the synthetic trees have no stem mesh and VTK leaves an empty block out.
+      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope"}},
       {OutputDetail::envelope, {"trees", "stem", "crown_envelope"}},
       {OutputDetail::cone, {"trees", "crown_cone"}}};
   for (const auto& [detail, names] : expected) {
     OutputFolder folder(tmp_.path() / std::string(name_of(detail)), false);
     VtkTimeSeriesWriter writer(folder, stand_blocks(detail));
     const fs::path vtm = folder.path_of(writer.write_year(stand_.snapshot));
-    std::vector<std::string> written = block_names(vtm);
-    // The synthetic trees have no trunk mesh, and VTK leaves an empty block out.
-    if (detail == OutputDetail::full) written.push_back("trunk");
-    EXPECT_EQ(written, names) << name_of(detail);
+    EXPECT_EQ(block_names(vtm), names) << name_of(detail);
   }
 }
 

@@ -168,8 +168,9 @@ def main(argv):
         show_leaf_balls(reader, view)
     if has_block(pvd, "stem"):
         show_stem(reader, view)
+    # At `full` the envelopes would hide the shoots and leaf balls they enclose: those are drawn instead.
     for crowns in ("crown_envelope", "crown_cone"):
-        if has_block(pvd, crowns):
+        if has_block(pvd, crowns) and not has_block(pvd, "branches"):
             show_crowns(reader, view, crowns)
     roots = has_block(pvd, "roots")
     if roots:
