@@ -289,6 +289,7 @@ struct Access {
       out.raw(entry.timestep);
       out.text(entry.file);
     }
+    out.text(output.vtk_->sizes_csv_);  // vtk_sizes.csv is rewritten whole every output year
   }
   // Every part is replaced, not added to: after a checkpoint that fails late, an older one can still be loaded.
   static TableLengths load(Reader& in, StandOutput& output) {
@@ -310,6 +311,7 @@ struct Access {
         const auto timestep = in.raw<double>("VTK year");
         output.vtk_->collection_.add(timestep, in.text("VTK year file"));
       }
+      output.vtk_->sizes_csv_ = in.text("VTK sizes table");
     }
     return lengths;
   }

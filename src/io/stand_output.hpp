@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/csv_writer.hpp"
+#include "io/output_detail.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_manifest.hpp"
 #include "io/stand_snapshot.hpp"
@@ -33,6 +34,7 @@ struct StandOutputOptions {
   bool force = false;        // replace an earlier heliostand run in `folder`
   double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
   bool write_vtk = true;     // false: tables only (batch forecasts)
+  OutputDetail detail = OutputDetail::full;  // the VTK blocks (io/output_detail.hpp)
   // Take over the folder of an interrupted run (OutputFolder's resume); the tables are reopened by a checkpoint
   // (io/checkpoint_state.hpp), which cuts them back to the rows it counts, instead of being started afresh.
   bool resume = false;

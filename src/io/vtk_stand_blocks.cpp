@@ -1,5 +1,7 @@
 #include "io/vtk_stand_blocks.hpp"
 
+#include "io/vtk_crown_blocks.hpp"
+
 #include <limits>
 #include <string_view>
 
@@ -221,15 +223,37 @@ std::vector<StandBlock> default_stand_blocks() {
   };
 }
 
+std::vector<StandBlock> stand_blocks(OutputDetail detail) {
+  auto block = [](const char* name, vtkSmartPointer<vtkPolyData> (*build)(const StandSnapshot&)) {
+    return StandBlock{name, [build](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build(s); }};
+  };
+  switch (detail) {
+    case OutputDetail::full: {
+      // The model's own view, and around each crown its envelope (issue 15: a crown a person recognises).
+      std::vector<StandBlock> blocks = default_stand_blocks();
+      blocks.push_back(block("crown_envelope", build_crown_envelope_block));
+      return blocks;
+    }
+    case OutputDetail::envelope:
+      return {block("trees", build_trees_block), block("stem", build_stem_block),
+              block("crown_envelope", build_crown_envelope_block)};
+    case OutputDetail::cone: return {block("trees", build_trees_block), block("crown_cone", build_crown_cone_block)};
+  }
+  return default_stand_blocks();
+}
+
 vtkSmartPointer<vtkMultiBlockDataSet> build_stand_multiblock(const StandSnapshot& snapshot,
-                                                             const std::vector<StandBlock>& blocks) {
+                                                             const std::vector<StandBlock>& all_blocks) {
+  std::vector<const StandBlock*> blocks;
+  for (const StandBlock& block : all_blocks)
+    if (block.written_at(snapshot.stand_age)) blocks.push_back(&block);
   auto multiblock = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   multiblock->SetNumberOfBlocks(static_cast<unsigned>(blocks.size()));
   for (unsigned i = 0; i < blocks.size(); ++i) {
-    vtkSmartPointer<vtkDataObject> block = blocks[i].build(snapshot);
+    vtkSmartPointer<vtkDataObject> block = blocks[i]->build(snapshot);
     stamp_time(*block, snapshot);
     multiblock->SetBlock(i, block);
-    multiblock->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), blocks[i].name.c_str());
+    multiblock->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), blocks[i]->name.c_str());
   }
   stamp_time(*multiblock, snapshot);
   return multiblock;

@@ -11,6 +11,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "io/output_detail.hpp"
 #include "io/stand_snapshot.hpp"
 
 namespace heliostand {
@@ -20,6 +21,9 @@ using BlockBuilder = std::function<vtkSmartPointer<vtkDataObject>(const StandSna
 struct StandBlock {
   std::string name;     // block name shown in ParaView (vtkCompositeDataSet::NAME)
   BlockBuilder build;
+  int age_multiple = 1;  // written only in the output years whose stand age is a multiple of this (roots, soil)
+
+  bool written_at(int stand_age) const { return age_multiple <= 1 || stand_age % age_multiple == 0; }
 };
 
 // One two-point line per shoot (base → tip). Point data: radius (m, wood radius, for the Tube filter's
@@ -39,10 +43,15 @@ vtkSmartPointer<vtkPolyData> build_trees_block(const StandSnapshot& snapshot);
 // tree_id, part (0 stem, 1 bark around a hollow, 2 callus roll), callus_thickness_m, bark_shift_m, bark_lift_m.
 vtkSmartPointer<vtkPolyData> build_trunk_block(const StandSnapshot& snapshot);
 
-// branches, leaf_balls, trees, trunk — in that order.
+// branches, leaf_balls, trees, trunk — in that order (detail `full`).
 std::vector<StandBlock> default_stand_blocks();
 
-// The multiblock of one output year: one block per builder, each block and the multiblock itself
+// The blocks of a level of detail (docs/formats.md): full — default_stand_blocks() and crown_envelope; envelope — trees, stem
+// (the stem axis as lines: the stem surface, `trunk`, is 70 kB a tree a year), crown_envelope; cone — trees,
+// crown_cone.
+std::vector<StandBlock> stand_blocks(OutputDetail detail);
+
+// The multiblock of one output year: one block per builder written at its stand age, each block and the multiblock itself
 // carrying the stand age in a one-value field array `TimeValue` (and the run's `year_index`).
 vtkSmartPointer<vtkMultiBlockDataSet> build_stand_multiblock(const StandSnapshot& snapshot,
                                                              const std::vector<StandBlock>& blocks);

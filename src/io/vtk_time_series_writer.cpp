@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <vtkXMLMultiBlockDataWriter.h>
 
@@ -11,7 +14,7 @@ namespace heliostand {
 namespace fs = std::filesystem;
 
 VtkTimeSeriesWriter::VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks)
-    : folder_(folder), blocks_(std::move(blocks)) {}
+    : folder_(folder), blocks_(std::move(blocks)), sizes_csv_("stand_age,block,bytes\n") {}
 
 fs::path VtkTimeSeriesWriter::year_file(int stand_age) {
   return fs::path(year_folder) / fmt::format("stand_age_{:04d}.vtm", stand_age);
@@ -41,7 +44,38 @@ void replace_with(const fs::path& from, const fs::path& to) {
   fs::rename(from, to);
 }
 
+double megabytes(std::uintmax_t bytes) { return static_cast<double>(bytes) / 1e6; }
+
 }  // namespace
+
+std::vector<std::pair<std::string, std::uintmax_t>> block_file_sizes(const fs::path& vtm) {
+  std::ifstream in(vtm);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string xml = text.str();
+  // VTK writes each block as <DataSet index="0" name="branches" file="stand_age_0025/stand_age_0025_0.vtp">.
+  static const std::regex data_set(R"re(<DataSet[^>]*\sname="([^"]*)"[^>]*\sfile="([^"]*)")re");
+  std::vector<std::pair<std::string, std::uintmax_t>> sizes;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), data_set); it != std::sregex_iterator(); ++it) {
+    const fs::path piece = vtm.parent_path() / (*it)[2].str();
+    std::error_code error;
+    const std::uintmax_t bytes = fs::file_size(piece, error);
+    sizes.emplace_back((*it)[1].str(), error ? 0 : bytes);
+  }
+  return sizes;
+}
+
+void VtkTimeSeriesWriter::record_sizes(int stand_age, const fs::path& vtm) {
+  std::uintmax_t total = fs::file_size(vtm);
+  std::string per_block;
+  for (const auto& [block, bytes] : block_file_sizes(vtm)) {
+    total += bytes;
+    per_block += fmt::format("{}{} {:.2f}", per_block.empty() ? "" : ", ", block, megabytes(bytes));
+    sizes_csv_ += fmt::format("{},{},{}\n", stand_age, block, bytes);
+  }
+  spdlog::info("VTK stand age {}: {:.2f} MB ({} MB)", stand_age, megabytes(total), per_block);
+  folder_.write_file(sizes_file, sizes_csv_);
+}
 
 fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
   const fs::path relative_vtm = year_file(snapshot.stand_age);
@@ -82,6 +116,7 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
     for (const fs::path& piece : pieces) folder_.record_output(fs::relative(piece, folder_.root()));
   }
 
+  record_sizes(snapshot.stand_age, final_vtm);
   collection_.add(snapshot.stand_age, relative_vtm.generic_string());
   folder_.write_file(collection_file, collection_.to_xml());
   return relative_vtm;

@@ -24,6 +24,15 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
   }
   if (auto seed = reader.integer("seed", any_seed())) run.seed = static_cast<std::uint64_t>(*seed);
   if (auto interval = reader.integer("output_interval", from_up_to(1, limit::tree_lifetime))) run.output_interval_years = static_cast<int>(*interval);
+  if (auto detail = reader.string("detail")) {
+    if (auto parsed = parse_output_detail(*detail)) {
+      run.output_detail = *parsed;
+    } else {
+      reader.problem("detail", fmt::format("expected \"full\", \"envelope\" or \"cone\", got \"{}\"", *detail));
+    }
+  }
+  if (auto interval = reader.integer("roots_output_interval", non_negative_up_to(limit::tree_lifetime)))
+    run.roots_output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {
     try {
       run.device = compute::DeviceChoice::parse(*device);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/output_detail.hpp"
 #include "architecture/species.hpp"
 #include "light/light_parameters.hpp"
 #include "compute/device_choice.hpp"
@@ -32,6 +33,8 @@ struct RunSettings {
   int years = 0;                      // years to simulate after the survey
   std::uint64_t seed = 1;
   int output_interval_years = 1;      // write the stand every this many years (and at the start and end)
+  OutputDetail output_detail = default_output_detail;  // what the VTK blocks draw of each tree
+  int roots_output_interval_years = 1;  // roots and soil blocks in output years at multiples of this age; 0 never
   compute::DeviceChoice device;
 };
 

@@ -191,9 +191,11 @@ std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stan
   return zone;
 }
 
-void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone) {
-  writer.add_block({"roots", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.roots_block(); }});
-  writer.add_block({"soil", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.soil_block(); }});
+void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple) {
+  writer.add_block({"roots", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.roots_block(); },
+                    age_multiple});
+  writer.add_block({"soil", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.soil_block(); },
+                    age_multiple});
 }
 
 }  // namespace heliostand

@@ -101,7 +101,8 @@ std::optional<RootZone> make_root_zone(const Scenario& scenario, const compute::
 std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
                                             const compute::ComputeBackend& backend);
 
-// Adds the `roots` (segment polylines) and `soil` (vtkImageData) blocks to every year the writer writes.
-void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone);
+// Adds the `roots` (segment polylines) and `soil` (vtkImageData) blocks to the years the writer writes whose
+// stand age is a multiple of `age_multiple` (scenario key run.roots_output_interval).
+void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple = 1);
 
 }  // namespace heliostand

@@ -114,7 +114,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
                                                ? run_identity(scenario, backend.name(), options.write_vtk)
                                                : checkpoint::RunIdentity{};
   StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk,
-                      options.resume});
+                      scenario.run.output_detail, options.resume});
 
   StageClock clock;
   // A resumed run's stand and roots come from its checkpoint: they start empty and are not spun up.
@@ -124,7 +124,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
   auto roots = options.resume ? make_root_zone(scenario, backend)
                               : clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
-  if (roots && output.vtk()) add_root_blocks(*output.vtk(), *roots);
+  if (roots && output.vtk() && scenario.run.roots_output_interval_years > 0)
+    add_root_blocks(*output.vtk(), *roots, scenario.run.roots_output_interval_years);
 
   StandYear simulated_year(stand, *solver, *open_grown_solver, roots ? &*roots : nullptr, &output,
                            {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,

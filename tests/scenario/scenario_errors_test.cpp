@@ -45,8 +45,8 @@ TEST(ScenarioErrors, UnknownKeysAndTables) {
   EXPECT_THAT(scenario_problems("unknown", minimal_stand + "yeras = 3\n[hollows]\ndepth_m = 2\n[light]\nsky_band = 8\n"),
               ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
                           "competition, thinning, roots, soil, coupling, root_pruning, hollow)",
-                          "scenario.toml:11: key 'run.yeras': unknown key (known keys here: device, output_interval, "
-                          "seed, years)",
+                          "scenario.toml:11: key 'run.yeras': unknown key (known keys here: detail, device, "
+                          "output_interval, roots_output_interval, seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
                           "far_field_cell_m, ground_albedo, intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
                           "sky, sky_bands, sky_scale, sky_sectors, transmittance)"));
@@ -67,6 +67,12 @@ TEST(ScenarioErrors, WrongTypes) {
                           "([species.NAME]), got an integer",
                           "scenario.toml:15: key 'light.transmittance': expected a number in (0, 1], got a string",
                           "scenario.toml:14: key 'light.exact': expected true or false, got a string"));
+}
+
+TEST(ScenarioErrors, LevelOfDetailAndRootsOutputInterval) {
+  EXPECT_THAT(scenario_problems("detail", minimal_stand + "detail = \"leaves\"\nroots_output_interval = -1\n"),
+              ElementsAre("scenario.toml:11: key 'run.detail': expected \"full\", \"envelope\" or \"cone\", got \"leaves\"",
+                          "scenario.toml:12: key 'run.roots_output_interval': expected an integer in [0, 5000], got -1"));
 }
 
 TEST(ScenarioErrors, NoSpeciesMayTakeTheWholeStandsName) {

@@ -121,6 +121,8 @@ inline void add_stand_run_light(std::vector<LimitCase>& cases) {
   cases.push_back({"run.years", "[run]\nyears = @\n", tree_lifetime.max, Bound::integer});
   cases.push_back({"run.output_interval", "[run]\nyears = 1\noutput_interval = @\n", tree_lifetime.max,
                    Bound::integer});
+  cases.push_back({"run.roots_output_interval", "[run]\nyears = 1\nroots_output_interval = @\n", tree_lifetime.max,
+                   Bound::integer});
   const std::string light = "[light]\nsky_bands = 8\nsky_sectors = 16\n";
   cases.push_back({"light.sky_bands", "[light]\nsky_bands = @\nsky_sectors = 16\n", sky_bands.max, Bound::integer});
   cases.push_back({"light.sky_sectors", "[light]\nsky_bands = 8\nsky_sectors = @\n", sky_sectors.max, Bound::integer});

@@ -1,6 +1,7 @@
 # Seed 000 (heliotropism) validation: parameter sweeps of the dichotomy model with the paper's findings asserted
 # (validation/heliotropism), reduced sizes so CTest stays within a couple of minutes; the metrics table goes to
 # build/validation/heliotropism/heliotropism_metrics.md. The same program runs one stands/kanamaru-* scenario.
+include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_executable(heliotropism_validation ${PROJECT_SOURCE_DIR}/validation/heliotropism/heliotropism_validation.cpp)
 target_link_libraries(heliotropism_validation PRIVATE heliostand_core)
 target_include_directories(heliotropism_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
@@ -21,10 +22,8 @@ add_test(NAME validation.heliotropism.render_sweeps
                  ${PROJECT_BINARY_DIR}/validation/heliotropism)
 set_tests_properties(validation.heliotropism.render_sweeps PROPERTIES
   FIXTURES_REQUIRED heliostand_heliotropism_sweeps
-  SKIP_RETURN_CODE 77
-  TIMEOUT 600
-  RESOURCE_LOCK xvfb
-  LABELS "paraview")
+  TIMEOUT 600)
+heliostand_render_test(validation.heliotropism.render_sweeps)
 
 # The runner end to end on a small scenario (the full Table 1 tree, stands/kanamaru-fig10e, takes minutes).
 add_test(NAME validation.heliotropism.run_scenario

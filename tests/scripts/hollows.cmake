@@ -2,6 +2,7 @@
 # <build>/validation/hollows/, pvbatch renders a close-up PNG of each into <build>/validation/hollows/png/ and
 # check_png.py checks that they show something. Reported as skipped (exit 77) where ParaView, xvfb or apt are
 # missing.
+include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_test(NAME hollow.figures.write_vtp
          COMMAND heliostand_tests --gtest_filter=FigureMeshes.WriteSeedLikeFiguresAsVtp)
 set_tests_properties(hollow.figures.write_vtp PROPERTIES FIXTURES_SETUP heliostand_hollow_figures)
@@ -13,10 +14,8 @@ add_test(NAME hollow.figures.render
                  --figures ${PROJECT_BINARY_DIR}/validation/hollows ${PROJECT_BINARY_DIR}/validation/hollows/png)
 set_tests_properties(hollow.figures.render PROPERTIES
   FIXTURES_REQUIRED heliostand_hollow_figures
-  SKIP_RETURN_CODE 77
-  TIMEOUT 600
-  RESOURCE_LOCK xvfb
-  LABELS "paraview")
+  TIMEOUT 600)
+heliostand_render_test(hollow.figures.render)
 
 # render_hollows.py's stand mode (--stand FILE.vtm --focus X Y Z): a two-tree multiblock laid out like the
 # stand output (block `trunk`, point data `tree_id`), one tree standing in front of the other's hollow.
@@ -27,7 +26,5 @@ add_test(NAME hollow.figures.render_stand_closeup
                  ${PROJECT_BINARY_DIR}/validation/hollows ${PROJECT_BINARY_DIR}/validation/hollows/png/stand)
 set_tests_properties(hollow.figures.render_stand_closeup PROPERTIES
   FIXTURES_REQUIRED heliostand_hollow_figures
-  SKIP_RETURN_CODE 77
-  TIMEOUT 600
-  RESOURCE_LOCK xvfb
-  LABELS "paraview")
+  TIMEOUT 600)
+heliostand_render_test(hollow.figures.render_stand_closeup)

@@ -1,6 +1,8 @@
 # ParaView render check: the output tests write a tiny two-year stand, pvbatch renders its first and
 # last time step (tubes by absolute radius, leaf-ball spheres coloured by light) and check_png.py
 # checks the images show something. Reported as skipped (exit 77) where ParaView, xvfb or apt are missing.
+# The X server the render tests share: cmake/PvbatchRenderTests.cmake.
+include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_test(NAME io.paraview.write_tiny_stand
          COMMAND heliostand_tests --gtest_also_run_disabled_tests --gtest_filter=ParaViewFixture.DISABLED_WriteTinyStand)
 set_tests_properties(io.paraview.write_tiny_stand PROPERTIES FIXTURES_SETUP heliostand_tiny_stand_series)
@@ -11,10 +13,8 @@ add_test(NAME io.paraview.render_tiny_stand
                  ${PROJECT_BINARY_DIR}/tests/paraview/png)
 set_tests_properties(io.paraview.render_tiny_stand PROPERTIES
   FIXTURES_REQUIRED heliostand_tiny_stand_series
-  SKIP_RETURN_CODE 77
-  TIMEOUT 600
-  RESOURCE_LOCK xvfb
-  LABELS "paraview")
+  TIMEOUT 600)
+heliostand_render_test(io.paraview.render_tiny_stand)
 
 # The README's first command grows the example stand into out/sobetsu and renders its first and last year
 # into out/sobetsu/pictures (render.sh checks them as it writes them). This test checks those pictures again,

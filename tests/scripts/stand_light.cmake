@@ -3,6 +3,7 @@
 # and build/validation/stand_light/stand_light.md; the self-thinning run is then rendered with the stand renderer
 # (ParaView; skipped without it outside CI). The two 62-tree gap runs are not rendered here: ~4 min each on 2
 # cores (validation/stand_light/README.md has the command).
+include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_executable(stand_light_validation ${PROJECT_SOURCE_DIR}/validation/stand_light/stand_light_validation.cpp)
 target_link_libraries(stand_light_validation PRIVATE heliostand_core)
 target_include_directories(stand_light_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
@@ -19,6 +20,6 @@ foreach(run self_thinning)
            COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh
                    ${STAND_LIGHT_OUT}/${run}/stand.pvd ${STAND_LIGHT_OUT}/pictures/${run})
   set_tests_properties(validation.stand_light.render_${run} PROPERTIES
-    FIXTURES_REQUIRED heliostand_stand_light_runs SKIP_RETURN_CODE 77 TIMEOUT 600
-    RESOURCE_LOCK xvfb LABELS "paraview")
+    FIXTURES_REQUIRED heliostand_stand_light_runs TIMEOUT 600)
+  heliostand_render_test(validation.stand_light.render_${run})
 endforeach()

@@ -2,9 +2,10 @@
 
     pvbatch render_stand.py STAND_PVD OUT_DIR [AGE ...]
 
-Branches become tubes whose radius is the wood radius written as point data (Tube filter,
-"Vary Radius: By Absolute Scalar"); leaf balls become spheres of their own radius coloured by
-their relative light. Roots (a `roots` block, written when the scenario has roots on) become tubes of
+Draws what the series' level of detail wrote (run.detail, docs/formats.md): at `full`, branches become tubes
+whose radius is the wood radius written as point data (Tube filter, "Vary Radius: By Absolute Scalar") and leaf
+balls spheres of their own radius coloured by their relative light; at `envelope`, the stem as tubes and each
+tree's crown envelope coloured by the tree's light; at `cone`, each tree's crown cone coloured by its light. Roots (a `roots` block, written when the scenario has roots on) become tubes of
 their own radius below a half-transparent ground. One PNG for the first and one for the last time step, both framed on the
 stand as it is at the last time step so the two images compare directly. Given AGEs (stand ages), one PNG
 per listed age instead (e.g. the years before and after a thinning).
@@ -67,8 +68,13 @@ def show_leaf_balls(reader, view):
     spheres.GlyphMode = "All Points"
     spheres.GlyphType.ThetaResolution = 12
     spheres.GlyphType.PhiResolution = 8
-    display = Show(spheres, view)
-    ColorBy(display, ("POINTS", "light"))
+    colour_by_light(Show(spheres, view), "POINTS", view)
+    return spheres
+
+
+def colour_by_light(display, association, view):
+    """Colour by `light` on the one fixed 0..1 scale of every block and year, with its legend."""
+    ColorBy(display, (association, "light"))
     light = GetColorTransferFunction("light")
     light.ApplyPreset("Viridis (matplotlib)", True)
     light.RescaleTransferFunction(0.0, 1.0)  # relative light: a fixed scale keeps years comparable
@@ -78,7 +84,18 @@ def show_leaf_balls(reader, view):
     bar.ComponentTitle = ""
     bar.TitleColor = INK
     bar.LabelColor = INK
-    return spheres
+
+
+def show_stem(reader, view):
+    """The stem axis (detail `envelope`) as tubes of its wood radius."""
+    return radius_tubes(block(reader, "stem"), view, BARK, floor=0.01, sides=10)
+
+
+def show_crowns(reader, view, name):
+    """Crown envelopes or cones (details `envelope`, `cone`), coloured by their tree's light (cell data)."""
+    crowns = block(reader, name)
+    colour_by_light(Show(crowns, view), "CELLS", view)
+    return crowns
 
 
 def has_block(pvd, name):
@@ -146,15 +163,22 @@ def main(argv):
     times = time_steps(reader)
     view = new_view(IMAGE_SIZE, SKY)
 
-    tubes = show_branches(reader, view)
-    show_leaf_balls(reader, view)
+    if has_block(pvd, "branches"):
+        show_branches(reader, view)
+        show_leaf_balls(reader, view)
+    if has_block(pvd, "stem"):
+        show_stem(reader, view)
+    # At `full` the envelopes would hide the shoots and leaf balls they enclose: those are drawn instead.
+    for crowns in ("crown_envelope", "crown_cone"):
+        if has_block(pvd, crowns) and not has_block(pvd, "branches"):
+            show_crowns(reader, view, crowns)
     roots = has_block(pvd, "roots")
     if roots:
         show_roots(reader, view)
 
     # Frame on the last (largest) year so both images share one camera.
     view.ViewTime = times[-1]
-    tubes.UpdatePipeline(times[-1])
+    reader.UpdatePipeline(times[-1])
     bounds = reader.GetDataInformation().GetBounds()
     show_ground(bounds, view, opacity=0.35 if roots else 1.0, surface_z=0.0 if roots else None)
     frame_stand(view, bounds)

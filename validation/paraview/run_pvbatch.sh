@@ -1,12 +1,16 @@
 #!/bin/sh
-# Run a ParaView Python script with pvbatch, headless (xvfb), then check the PNGs it wrote.
+# Run a ParaView Python script with pvbatch, headless (Xvfb), then check the PNGs it wrote.
 #
 #   validation/paraview/run_pvbatch.sh SCRIPT.py LOG_DIR [ARG ...]
 #
 # The script gets the ARGs; it must print the path of every PNG it writes, one per line (those are
 # checked by check_png.py). Its output goes to LOG_DIR/render.log.
 #
-# Needs the Debian packages `paraview xvfb xauth` (install paraview with --no-install-recommends:
+# X server: with HELIOSTAND_XVFB_DIR set (the render tests: one server per test run, started by a CTest
+# fixture), the display that xvfb.sh wrote to that folder; otherwise a server of this run's own, started by
+# xvfb.sh in LOG_DIR/xvfb and stopped (and waited for) on exit. xvfb.sh says why not xvfb-run.
+#
+# Needs the Debian packages `paraview xvfb` (install paraview with --no-install-recommends:
 # its recommended python3-paraview conflicts with libvtk9-dev, which the build needs). pvbatch's
 # Python modules come from python3-paraview, which this script therefore fetches with
 # `apt-get download` (same version as the installed paraview) and unpacks with `dpkg -x` into a
@@ -41,8 +45,7 @@ pvbatch=$(command -v "${HELIOSTAND_PVBATCH:-pvbatch}") ||
 # Resolve symlinks (/bin -> /usr/bin): pvbatch derives its Python path from its own location, and from
 # /bin it would pick up python3-vtk9's vtkmodules instead of ParaView's and crash.
 pvbatch=$(readlink -f "$pvbatch")
-command -v xvfb-run >/dev/null 2>&1 || skip "xvfb-run not found (apt-get install xvfb xauth)"
-command -v xauth >/dev/null 2>&1 || skip "xauth not found (apt-get install xauth)"
+command -v Xvfb >/dev/null 2>&1 || skip "Xvfb not found (apt-get install xvfb)"
 
 # pvbatch's Python side: the system one if python3-paraview happens to be installed, else a private copy.
 if [ -f /usr/lib/python3/dist-packages/paraview/simple.py ]; then
@@ -61,28 +64,36 @@ else
     mkdir -p "$(dirname "$private")"
     rm -rf "$private"
     mv "$work/root" "$private"  # only a complete folder ever appears under the final name
+    rm -rf "$work"
+    trap - EXIT
   fi
   paraview_python=$private/usr/lib/python3/dist-packages
 fi
 
 mkdir -p "$log_dir"
 log=$log_dir/render.log
-# pvbatch sometimes cannot open the display xvfb-run gives it ("bad X server connection", within 2 s, before
-# anything is drawn; seen in CI under load, cause not found: issue 15). That start-up failure, and only that one,
-# is retried with a fresh server, at most 3 times in all; any other failure fails at once.
-attempt=1
-until PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} \
-  xvfb-run -a -s "-screen 0 1600x1200x24" "$pvbatch" "$script" "$@" > "$log" 2>&1; do
-  if [ "$attempt" -lt 3 ] && grep -q "bad X server connection" "$log"; then
-    echo "warning: pvbatch could not open the X display (attempt $attempt of 3); retrying with a new server" >&2
-    attempt=$((attempt + 1))
-    sleep 2
-    continue
-  fi
+if [ -n "${HELIOSTAND_XVFB_DIR:-}" ]; then
+  [ -s "$HELIOSTAND_XVFB_DIR/display" ] ||
+    { echo "error: no X display in $HELIOSTAND_XVFB_DIR/display (the xvfb fixture did not start)" >&2; exit 1; }
+else
+  export HELIOSTAND_XVFB_DIR="$log_dir/xvfb"
+  # Stop our server on any exit, and wait until it is gone.
+  trap 'sh "$here/xvfb.sh" stop "$HELIOSTAND_XVFB_DIR"' EXIT
+  sh "$here/xvfb.sh" start "$HELIOSTAND_XVFB_DIR" >&2 || exit $?
+fi
+DISPLAY=$(cat "$HELIOSTAND_XVFB_DIR/display")
+export DISPLAY
+
+# pvbatch runs in the background so that an interrupt reaches this shell at once (sh defers traps until a
+# foreground child ends); the interrupt stops pvbatch, and the EXIT trap then the X server.
+PYTHONPATH=$paraview_python${PYTHONPATH:+:$PYTHONPATH} "$pvbatch" "$script" "$@" > "$log" 2>&1 &
+pvbatch_pid=$!
+trap 'kill "$pvbatch_pid" 2>/dev/null; exit 1' INT TERM HUP
+wait "$pvbatch_pid" || {
   cat "$log" >&2
   echo "error: pvbatch failed (log above, also in $log)" >&2
   exit 1
-done
+}
 images=$(grep '\.png$' "$log" || true)
 [ -n "$images" ] || { cat "$log" >&2; echo "error: pvbatch wrote no image" >&2; exit 1; }
 # shellcheck disable=SC2086  # one image path per word; the paths are ours and have no spaces

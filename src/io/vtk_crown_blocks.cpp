@@ -1,0 +1,139 @@
+#include "io/vtk_crown_blocks.hpp"
+
+#include <vtkAppendPolyData.h>
+#include <vtkCellArray.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkDelaunay3D.h>
+#include <vtkConeSource.h>
+#include <vtkDoubleArray.h>
+#include <vtkHull.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+
+#include "io/tree_cell_data.hpp"
+
+namespace heliostand {
+namespace {
+
+// vtkHull's plane directions: the vertices of an octahedron subdivided twice (level 0: 6, 1: 18, 2: 66), round
+// enough for a crown at a few dozen polygons a tree.
+constexpr int hull_sphere_levels = 2;
+constexpr int cone_sides = 8;
+constexpr double envelope_merge_tolerance = 1e-6;  // of the crown size: corners closer than this are one
+
+// Points of a tree's foliage: each leaf ball's six extreme points, so the hull encloses the balls, not only
+// their centres.
+vtkSmartPointer<vtkPolyData> foliage_extremes(const TreeSnapshot& tree) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (const LeafBall& ball : tree.leaf_balls)
+    for (int axis = 0; axis < 3; ++axis)
+      for (double side : {-1.0, 1.0}) {
+        glm::dvec3 p = ball.centre;
+        p[axis] += side * ball.radius;
+        points->InsertNextPoint(p.x, p.y, p.z);
+      }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  return cloud;
+}
+
+vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
+  auto hull = vtkSmartPointer<vtkHull>::New();
+  hull->SetInputData(foliage_extremes(tree));
+  hull->AddRecursiveSpherePlanes(hull_sphere_levels);
+  hull->Update();
+  // vtkHull's polygons meet at T-junctions and do not share corners. A Delaunay tetrahedralisation of its corners
+  // (a few dozen points), whose outer surface is their convex hull, gives the same shape as a closed triangle mesh.
+  auto corners = vtkSmartPointer<vtkPolyData>::New();
+  corners->SetPoints(hull->GetOutput()->GetPoints());
+  auto tetrahedra = vtkSmartPointer<vtkDelaunay3D>::New();
+  tetrahedra->SetInputData(corners);
+  tetrahedra->SetTolerance(envelope_merge_tolerance);
+  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+  surface->SetInputConnection(tetrahedra->GetOutputPort());
+  surface->Update();
+  return surface->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> crown_cone(const TreeSnapshot& tree) {
+  const double length = tree.height_m - tree.crown_base_m;
+  auto cone = vtkSmartPointer<vtkConeSource>::New();
+  cone->SetResolution(cone_sides);
+  cone->SetHeight(length);
+  cone->SetRadius(tree.crown_radius_m);
+  cone->SetDirection(0, 0, 1);  // apex up
+  cone->SetCenter(tree.position.x, tree.position.y, tree.position.z + tree.crown_base_m + 0.5 * length);
+  cone->CappingOn();
+  cone->Update();
+  return cone->GetOutput();
+}
+
+// One polydata from the trees' pieces, each piece's cells carrying its tree's attributes.
+template <typename PieceOf>
+vtkSmartPointer<vtkPolyData> append_per_tree(const StandSnapshot& snapshot, PieceOf piece_of) {
+  auto append = vtkSmartPointer<vtkAppendPolyData>::New();
+  TreeCellData cells;
+  for (const TreeSnapshot& tree : snapshot.trees) {
+    vtkSmartPointer<vtkPolyData> piece = piece_of(tree);
+    if (!piece || piece->GetNumberOfCells() == 0) continue;
+    append->AddInputData(piece);
+    cells.add(tree, piece->GetNumberOfCells());
+  }
+  auto block = vtkSmartPointer<vtkPolyData>::New();
+  if (append->GetNumberOfInputConnections(0) == 0) return block;
+  append->Update();
+  block->ShallowCopy(append->GetOutput());
+  block->GetPointData()->Initialize();  // the sources' normals and texture coordinates are not ours
+  block->GetCellData()->Initialize();
+  cells.attach_to(*block->GetCellData());
+  return block;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> build_stem_block(const StandSnapshot& snapshot) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto radius = vtkSmartPointer<vtkDoubleArray>::New();
+  radius->SetName("radius");
+  TreeCellData cells;
+  for (const TreeSnapshot& tree : snapshot.trees) {
+    vtkIdType stem_shoots = 0;
+    for (const Shoot& shoot : tree.shoots) {
+      if (shoot.axis != 0) continue;
+      const vtkIdType base = points->InsertNextPoint(shoot.base.x, shoot.base.y, shoot.base.z);
+      points->InsertNextPoint(shoot.tip.x, shoot.tip.y, shoot.tip.z);
+      radius->InsertNextValue(shoot.base_radius_m);
+      radius->InsertNextValue(shoot.tip_radius_m);
+      const vtkIdType line[2] = {base, base + 1};
+      lines->InsertNextCell(2, line);
+      ++stem_shoots;
+    }
+    cells.add(tree, stem_shoots);
+  }
+  auto block = vtkSmartPointer<vtkPolyData>::New();
+  block->SetPoints(points);
+  block->SetLines(lines);
+  block->GetPointData()->AddArray(radius);
+  block->GetPointData()->SetActiveScalars("radius");
+  cells.attach_to(*block->GetCellData());
+  return block;
+}
+
+vtkSmartPointer<vtkPolyData> build_crown_envelope_block(const StandSnapshot& snapshot) {
+  return append_per_tree(snapshot, [](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
+    if (tree.leaf_balls.empty()) return nullptr;
+    return crown_envelope(tree);
+  });
+}
+
+vtkSmartPointer<vtkPolyData> build_crown_cone_block(const StandSnapshot& snapshot) {
+  return append_per_tree(snapshot, [](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
+    if (!(tree.height_m > tree.crown_base_m) || !(tree.crown_radius_m > 0)) return nullptr;
+    return crown_cone(tree);
+  });
+}
+
+}  // namespace heliostand

@@ -1,0 +1,184 @@
+// The levels of detail of the yearly VTK multiblock (run.detail, docs/formats.md): which blocks each level
+// writes, that a crown envelope is closed and encloses the tree's foliage, that a cone spans the crown, that the
+// per-tree attributes are on every cell, that the sizes written are stated, and that roots can skip years.
+#include "io/vtk_time_series_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <vtkCell.h>
+#include <vtkCellData.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkFeatureEdges.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkIdList.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLMultiBlockDataReader.h>
+
+#include "io/synthetic_stand.hpp"
+#include "io/temp_folder.hpp"
+#include "io/vtk_crown_blocks.hpp"
+
+namespace heliostand {
+namespace {
+namespace fs = std::filesystem;
+
+std::vector<std::string> block_names(const fs::path& vtm) {
+  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
+  reader->SetFileName(vtm.string().c_str());
+  reader->Update();
+  auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  std::vector<std::string> names;
+  for (unsigned i = 0; i < multiblock->GetNumberOfBlocks(); ++i)
+    if (multiblock->GetBlock(i) != nullptr)  // an empty block is an unnamed placeholder in the file
+      names.emplace_back(multiblock->GetMetaData(i)->Get(vtkCompositeDataSet::NAME()));
+  return names;
+}
+
+// The cells of `block` that belong to tree `id`, as their own polydata with only the points they use.
+vtkSmartPointer<vtkPolyData> cells_of_tree(vtkPolyData& block, int id) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto tree = vtkSmartPointer<vtkPolyData>::New();
+  tree->AllocateEstimate(block.GetNumberOfCells(), 4);
+  std::map<vtkIdType, vtkIdType> renumbered;
+  vtkDataArray* ids = block.GetCellData()->GetArray("tree_id");
+  for (vtkIdType c = 0; c < block.GetNumberOfCells(); ++c) {
+    if (static_cast<int>(ids->GetTuple1(c)) != id) continue;
+    vtkIdList* corners = block.GetCell(c)->GetPointIds();
+    std::vector<vtkIdType> local;
+    for (vtkIdType k = 0; k < corners->GetNumberOfIds(); ++k) {
+      const vtkIdType p = corners->GetId(k);
+      auto [it, added] = renumbered.emplace(p, points->GetNumberOfPoints());
+      if (added) points->InsertNextPoint(block.GetPoint(p));
+      local.push_back(it->second);
+    }
+    tree->InsertNextCell(block.GetCellType(c), static_cast<vtkIdType>(local.size()), local.data());
+  }
+  tree->SetPoints(points);
+  return tree;
+}
+
+class LevelsOfDetail : public ::testing::Test {
+ protected:
+  LevelsOfDetail() : tmp_("vtk_levels_of_detail"), folder_(tmp_.path() / "run", false) {}
+  testing::TempFolder tmp_;
+  OutputFolder folder_;
+  testing::SyntheticStand stand_ = testing::make_synthetic_stand(16, 0);  // trees of 9, 8 and 7 m
+};
+
+TEST_F(LevelsOfDetail, EachLevelWritesItsBlocks) {
+  const std::map<OutputDetail, std::vector<std::string>> expected = {
+      // full also has `trunk`, but the synthetic trees have no stem mesh and VTK leaves an empty block out.
+      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope"}},
+      {OutputDetail::envelope, {"trees", "stem", "crown_envelope"}},
+      {OutputDetail::cone, {"trees", "crown_cone"}}};
+  for (const auto& [detail, names] : expected) {
+    OutputFolder folder(tmp_.path() / std::string(name_of(detail)), false);
+    VtkTimeSeriesWriter writer(folder, stand_blocks(detail));
+    const fs::path vtm = folder.path_of(writer.write_year(stand_.snapshot));
+    EXPECT_EQ(block_names(vtm), names) << name_of(detail);
+  }
+}
+
+TEST_F(LevelsOfDetail, EveryTreeHasAClosedEnvelopeAroundAllItsLeafBalls) {
+  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  for (std::size_t i = 0; i < stand_.snapshot.trees.size(); ++i) {
+    const TreeSnapshot& tree = stand_.snapshot.trees[i];
+    vtkSmartPointer<vtkPolyData> envelope = cells_of_tree(*block, tree.id);
+    ASSERT_GT(envelope->GetNumberOfCells(), 20) << "tree " << tree.id;
+    auto open_edges = vtkSmartPointer<vtkFeatureEdges>::New();
+    open_edges->SetInputData(envelope);
+    open_edges->BoundaryEdgesOn();
+    open_edges->NonManifoldEdgesOn();
+    open_edges->FeatureEdgesOff();
+    open_edges->ManifoldEdgesOff();
+    open_edges->Update();
+    EXPECT_EQ(open_edges->GetOutput()->GetNumberOfCells(), 0) << "tree " << tree.id << ": the envelope is not closed";
+    double bounds[6];
+    envelope->GetBounds(bounds);
+    for (const LeafBall& ball : tree.leaf_balls)
+      for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_LE(bounds[2 * axis], ball.centre[axis] - ball.radius + 1e-6) << "tree " << tree.id;
+        EXPECT_GE(bounds[2 * axis + 1], ball.centre[axis] + ball.radius - 1e-6) << "tree " << tree.id;
+      }
+  }
+  vtkDataArray* light = block->GetCellData()->GetArray("light");
+  ASSERT_NE(light, nullptr);
+  EXPECT_DOUBLE_EQ(light->GetTuple1(0), 0.5);  // the tree's mean_light
+}
+
+TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {
+  stand_.snapshot.trees[1].leaf_balls.clear();
+  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  EXPECT_EQ(cells_of_tree(*block, stand_.snapshot.trees[1].id)->GetNumberOfCells(), 0);
+  EXPECT_GT(cells_of_tree(*block, stand_.snapshot.trees[0].id)->GetNumberOfCells(), 0);
+}
+
+TEST_F(LevelsOfDetail, EachConeSpansItsTreesCrown) {
+  vtkSmartPointer<vtkPolyData> block = build_crown_cone_block(stand_.snapshot);
+  for (const TreeSnapshot& tree : stand_.snapshot.trees) {
+    vtkSmartPointer<vtkPolyData> cone = cells_of_tree(*block, tree.id);
+    EXPECT_EQ(cone->GetNumberOfCells(), 9) << "eight sides and a base";
+    double bounds[6];
+    cone->GetBounds(bounds);
+    EXPECT_NEAR(bounds[4], tree.position.z + tree.crown_base_m, 1e-9) << "tree " << tree.id;
+    EXPECT_NEAR(bounds[5], tree.position.z + tree.height_m, 1e-9) << "tree " << tree.id;
+    EXPECT_NEAR(bounds[1] - tree.position.x, tree.crown_radius_m, 1e-6) << "tree " << tree.id;
+    EXPECT_NEAR(tree.position.x - bounds[0], tree.crown_radius_m, 1e-6) << "tree " << tree.id;
+  }
+}
+
+TEST_F(LevelsOfDetail, TheStemIsTheAxisZeroShootsWithTheirRadius) {
+  vtkSmartPointer<vtkPolyData> block = build_stem_block(stand_.snapshot);
+  int stem_shoots = 0;
+  for (int height : stand_.heights) stem_shoots += height;  // one-metre stem shoots
+  EXPECT_EQ(block->GetNumberOfLines(), stem_shoots);
+  for (const char* name : {"tree_id", "status", "habitat_tree", "light"})
+    EXPECT_EQ(block->GetCellData()->GetArray(name)->GetNumberOfTuples(), stem_shoots) << name;
+}
+
+TEST_F(LevelsOfDetail, TheSizesOfEveryBlockAndYearAreStated) {
+  VtkTimeSeriesWriter writer(folder_, stand_blocks(OutputDetail::envelope));
+  const fs::path first = folder_.path_of(writer.write_year(stand_.snapshot));
+  const auto later = testing::make_synthetic_stand(18, 2);
+  writer.write_year(later.snapshot);
+  std::ifstream csv(folder_.path_of(VtkTimeSeriesWriter::sizes_file));
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(csv, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 7u) << "a header and three blocks in each of two years";
+  EXPECT_EQ(rows[0], "stand_age,block,bytes");
+  const fs::path pieces = fs::path(first).replace_extension();
+  const auto sizes = block_file_sizes(first);
+  ASSERT_EQ(sizes.size(), 3u);
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const auto& [block, bytes] = sizes[i];
+    EXPECT_EQ(rows[1 + i], fmt::format("16,{},{}", block, bytes));
+    EXPECT_EQ(bytes, fs::file_size(pieces / fmt::format("stand_age_0016_{}.vtp", i))) << block;
+  }
+  EXPECT_EQ(rows[4].substr(0, 9), "18,trees,");
+}
+
+TEST_F(LevelsOfDetail, ABlockWithAnAgeMultipleIsWrittenOnlyInThoseYears) {
+  VtkTimeSeriesWriter writer(folder_, stand_blocks(OutputDetail::cone));
+  writer.add_block({"roots", [](const StandSnapshot& s) -> vtkSmartPointer<vtkDataObject> { return build_trees_block(s); },
+                    10});
+  const auto at_16 = block_names(folder_.path_of(writer.write_year(stand_.snapshot)));
+  const auto stand_20 = testing::make_synthetic_stand(20, 4);
+  const auto at_20 = block_names(folder_.path_of(writer.write_year(stand_20.snapshot)));
+  EXPECT_EQ(at_16, (std::vector<std::string>{"trees", "crown_cone"}));
+  EXPECT_EQ(at_20, (std::vector<std::string>{"trees", "crown_cone", "roots"}));
+}
+
+}  // namespace
+}  // namespace heliostand
