@@ -1,9 +1,12 @@
 # Seed 000 (heliotropism) validation: parameter sweeps of the dichotomy model with the paper's findings asserted
 # (validation/heliotropism), reduced sizes so CTest stays within a couple of minutes; the metrics table goes to
 # build/validation/heliotropism/heliotropism_metrics.md. The same program runs one stands/kanamaru-* scenario.
-add_executable(heliotropism_validation ${PROJECT_SOURCE_DIR}/validation/heliotropism/heliotropism_validation.cpp)
+add_executable(heliotropism_validation ${PROJECT_SOURCE_DIR}/validation/heliotropism/heliotropism_validation.cpp
+                                      ${PROJECT_SOURCE_DIR}/validation/heliotropism/crown_shape.cpp)
 target_link_libraries(heliotropism_validation PRIVATE heliostand_core)
 target_include_directories(heliotropism_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
+# Fig. 6 reads its two layouts from stands/kanamaru-fig6-*.
+target_compile_definitions(heliotropism_validation PRIVATE HELIOSTAND_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 add_test(NAME validation.heliotropism.findings
          COMMAND heliotropism_validation validate ${PROJECT_BINARY_DIR}/validation/heliotropism)
@@ -27,14 +30,19 @@ set_tests_properties(validation.heliotropism.render_sweeps PROPERTIES
   LABELS "paraview")
 
 # The runner end to end on a small scenario (the full Table 1 tree, stands/kanamaru-fig10e, takes minutes).
+# Through tests/expect_exit_and_output.cmake: the exit status and the message are both checked (CTest's
+# PASS_REGULAR_EXPRESSION alone would ignore the status).
+set(HELIOSTAND_EXPECT ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake)
 add_test(NAME validation.heliotropism.run_scenario
-         COMMAND heliotropism_validation run ${PROJECT_SOURCE_DIR}/stands/kanamaru-ci/scenario.toml
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 "-DEXPECT_OUTPUT=12 generations, [1-9][0-9]* living tips"
+                 -P ${HELIOSTAND_EXPECT}
+                 $<TARGET_FILE:heliotropism_validation> run ${PROJECT_SOURCE_DIR}/stands/kanamaru-ci/scenario.toml
                  ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-ci)
-set_tests_properties(validation.heliotropism.run_scenario PROPERTIES TIMEOUT 300 LABELS "validation"
-                     PASS_REGULAR_EXPRESSION "12 generations, [1-9][0-9]* living tips")
+set_tests_properties(validation.heliotropism.run_scenario PROPERTIES TIMEOUT 300 LABELS "validation")
 # Bad input: every bad key reported with file, line and key, exit status 2.
 add_test(NAME validation.heliotropism.bad_scenario
-         COMMAND heliotropism_validation run ${PROJECT_SOURCE_DIR}/stands/kanamaru-bad/scenario.toml
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2
+                 "-DEXPECT_OUTPUT=scenario.toml:3: key .model.kind.*trichotomy.*scenario.toml:4: key .model.heliotropism.*scenario.toml:5: key .model.leaf_radius."
+                 -P ${HELIOSTAND_EXPECT}
+                 $<TARGET_FILE:heliotropism_validation> run ${PROJECT_SOURCE_DIR}/stands/kanamaru-bad/scenario.toml
                  ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-bad)
-set_tests_properties(validation.heliotropism.bad_scenario PROPERTIES
-  PASS_REGULAR_EXPRESSION "scenario.toml:3: key .model.kind.*trichotomy.*scenario.toml:4: key .model.heliotropism.*scenario.toml:5: key .model.leaf_radius.")
