@@ -46,3 +46,10 @@ add_test(NAME validation.heliotropism.bad_scenario
                  -P ${HELIOSTAND_EXPECT}
                  $<TARGET_FILE:heliotropism_validation> run ${PROJECT_SOURCE_DIR}/stands/kanamaru-bad/scenario.toml
                  ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-bad)
+# Figs. 16-17 on the conifer (validation/heliotropism/conifer_findings_validation.cpp; GoogleTest, each TEST a CTest).
+add_executable(heliostand_conifer_findings ${PROJECT_SOURCE_DIR}/validation/heliotropism/conifer_findings_validation.cpp)
+target_include_directories(heliostand_conifer_findings PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)
+target_link_libraries(heliostand_conifer_findings PRIVATE heliostand_core GTest::gtest GTest::gtest_main)
+gtest_discover_tests(heliostand_conifer_findings
+  DISCOVERY_TIMEOUT 60
+  PROPERTIES ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache" LABELS "validation")
