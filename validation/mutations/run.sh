@@ -46,8 +46,10 @@ build() {  # targets..., log
   # shellcheck disable=SC2086
   cmake --build "$tree/build" -j2 --target "$@" >"$log" 2>&1
 }
+# A check runs at most CHECK_TIMEOUT seconds (default 900, the findings test's CTest timeout): a break that makes
+# the model run away fails its CTest by timing out, so a timeout counts as a failure here too (exit status 124).
 check() {  # check command, log: exit status of the check
-  (cd "$tree/build" && sh -c "$1") >"$2" 2>&1
+  (cd "$tree/build" && timeout "${CHECK_TIMEOUT:-900}" sh -c "$1") >"$2" 2>&1
 }
 
 result=$work/result.md
