@@ -78,7 +78,7 @@ while IFS='	' read -r name targets check; do
     mutated="does not build"; caught=yes
   fi
   (cd "$tree" && git apply -R "$here/$name.patch")
-  echo "| $name | \`$check\` | $base | $mutated | $caught |" >>"$result"
+  echo "| $name | \`$(printf '%s' "$check" | sed 's/|/\\|/g')\` | $base | $mutated | $caught |" >>"$result"
   echo "$name: unmutated $base, with the break $mutated, caught: $caught ($(( $(date +%s) - start )) s)" >&2
 done <"$list"
 cat "$result"
