@@ -2,6 +2,8 @@
 // Writes small survey files for tests into GoogleTest's temporary folder.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,8 +13,17 @@
 
 namespace heliostand::testing {
 
+// One folder per test and process: CTest runs the tests of one program in parallel processes (ctest -j), and
+// tests that share a file name ("bad.csv") would otherwise read each other's files.
+inline std::filesystem::path test_file_folder() {
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string test_name = test ? std::string(test->test_suite_name()) + "." + test->name() : "no-test";
+  return std::filesystem::path(::testing::TempDir()) / "heliostand_inputs" /
+         (test_name + "-" + std::to_string(::getpid()));
+}
+
 inline std::filesystem::path write_test_file(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "heliostand_inputs";
+  const auto dir = test_file_folder();
   const auto path = dir / name;
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
