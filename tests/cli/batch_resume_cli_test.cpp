@@ -10,12 +10,10 @@
 
 #include <chrono>
 #include <fstream>
-#include <map>
 #include <thread>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/cli_runner.hpp"
+#include "cli/resumable_run.hpp"
 
 extern char** environ;
 
@@ -23,15 +21,9 @@ namespace heliostand::testing {
 namespace {
 namespace fs = std::filesystem;
 
-// One run: the tiny stand (8 trees) with roots, 6 years under a coarse sky (~1 s a year), tables only.
+// One run of the checkpoint tests' stand (cli/resumable_run.hpp), tables only.
 fs::path write_manifest(const fs::path& folder) {
-  fs::create_directories(folder);
-  fs::copy_file(source_path("stands/tiny/survey.csv"), folder / "survey.csv");
-  std::ofstream(folder / "scenario.toml")
-      << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-         "[run]\nyears = 6\nseed = 7\noutput_interval = 1\n"
-         "[light]\nsky_bands = 4\nsky_sectors = 8\n"
-         "[soil]\nnutrient = 0.5\n";
+  write_resumable_scenario(folder);
   std::ofstream(folder / "manifest.toml") << "out = \"out\"\nseeds = [7]\nvtk = false\ndevice = \"reference\"\n"
                                              "[[stand]]\nname = \"tiny\"\nscenario = \"scenario.toml\"\n"
                                              "[[scenario]]\nname = \"as-is\"\n";
@@ -39,22 +31,6 @@ fs::path write_manifest(const fs::path& folder) {
 }
 
 const fs::path run_folder = fs::path("runs") / "tiny" / "as-is" / "seed-7";
-
-std::map<std::string, std::string> outputs_of(const fs::path& folder) {
-  std::map<std::string, std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
-    const std::string name = fs::relative(entry.path(), folder).generic_string();
-    std::string bytes = read_text(entry.path());
-    if (name == "run.json") {
-      auto manifest = nlohmann::json::parse(bytes);
-      for (const char* timing : {"started_utc", "finished_utc", "wall_seconds", "stage_seconds"}) manifest.erase(timing);
-      bytes = manifest.dump(2);
-    }
-    files[name] = bytes;
-  }
-  return files;
-}
 
 // Starts the batch in a process group of its own, waits for the run's second checkpoint, and kills the batch and
 // its grow process with SIGKILL.
@@ -99,17 +75,7 @@ TEST(BatchResumeCli, AKilledBatchResumesItsRunFromTheCheckpointAndEndsAsTheUnint
   EXPECT_TRUE(fs::exists(resumed / run_folder / "left-by-the-kill.txt"))
       << "the unfinished run was grown anew instead of resumed from its checkpoint";
   fs::remove(resumed / run_folder / "left-by-the-kill.txt");
-  const auto want = outputs_of(uninterrupted / run_folder), got = outputs_of(resumed / run_folder);
-  EXPECT_GT(want.size(), 3u);
-  for (const auto& [name, bytes] : want) {
-    const auto found = got.find(name);
-    if (found == got.end()) {
-      ADD_FAILURE() << name << " is missing in the resumed run";
-      continue;
-    }
-    EXPECT_TRUE(found->second == bytes) << name << " differs from the uninterrupted run's";
-  }
-  EXPECT_EQ(got.size(), want.size());
+  expect_same_outputs(uninterrupted / run_folder, resumed / run_folder, 3);  // tables only: 3 CSV, run.json, the marker
 }
 
 }  // namespace
