@@ -18,7 +18,8 @@ work=$(cd "$work" && pwd)
 tree=$work/tree
 # git apply inside WORK_DIR must not find the checkout's repository (it would patch paths relative to its top).
 export GIT_CEILING_DIRECTORIES=$work
-export CCACHE_BASEDIR=${CCACHE_BASEDIR:-/work} CCACHE_DIR=${CCACHE_DIR:-/work/.ccache}
+# ccache (when present) keeps its own settings: export CCACHE_BASEDIR=<a folder above both trees> to share objects
+# between the checkout's build and the copy's.
 launcher=
 command -v ccache >/dev/null 2>&1 && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache"
 

@@ -1,0 +1,11 @@
+# The mutation harness (validation/mutations/run.sh, on demand: ~25 minutes) applies each documented break as a
+# patch. A change to the code a patch touches would leave the break unappliable and the harness unable to prove
+# anything, so every patch must still apply to the committed sources (git apply --check, no change made). Skipped
+# (exit 77) where the sources are not a git checkout.
+file(GLOB HELIOSTAND_MUTATION_PATCHES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/validation/mutations/*.patch)
+foreach(patch ${HELIOSTAND_MUTATION_PATCHES})
+  get_filename_component(name ${patch} NAME_WE)
+  add_test(NAME validation.mutations.applies.${name}
+           COMMAND sh -c "git -C '${PROJECT_SOURCE_DIR}' rev-parse --git-dir >/dev/null 2>&1 || exit 77; exec git -C '${PROJECT_SOURCE_DIR}' apply --check '${patch}'")
+  set_tests_properties(validation.mutations.applies.${name} PROPERTIES SKIP_RETURN_CODE 77 LABELS "validation" TIMEOUT 60)
+endforeach()
