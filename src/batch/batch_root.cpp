@@ -80,12 +80,8 @@ void write_composed_scenario(const fs::path& root, const BatchRun& run) {
   }
   fs::create_directories(target.parent_path());
   AtomicFile file(target);
-  {
-    std::ofstream out(file.temporary_path(), std::ios::binary | std::ios::trunc);
-    out << run.composed_scenario;
-    out.close();
-    if (!out) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
-  }
+  if (!file.write(run.composed_scenario))
+    throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
   file.commit();
 }
 

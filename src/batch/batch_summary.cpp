@@ -48,12 +48,7 @@ std::string status_fields(const RunResult& result) {
 
 void write_atomically(const fs::path& file, const std::string& contents) {
   AtomicFile atomic(file);
-  {
-    std::ofstream out(atomic.temporary_path(), std::ios::binary | std::ios::trunc);
-    out << contents;
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", atomic.temporary_path().string()));
-  }
+  if (!atomic.write(contents)) throw std::runtime_error(fmt::format("cannot write {}", atomic.temporary_path().string()));
   atomic.commit();
 }
 

@@ -30,6 +30,13 @@ AtomicFile::~AtomicFile() {
   fs::remove_all(temporary_, ignored);
 }
 
+bool AtomicFile::write(std::string_view contents) const {
+  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
+  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  out.close();
+  return static_cast<bool>(out);
+}
+
 void AtomicFile::commit() {
   if (committed_) return;
   std::error_code error;
@@ -115,12 +122,7 @@ void OutputFolder::write_file(const fs::path& relative, std::string_view content
   const fs::path target = path_of(relative);
   fs::create_directories(target.parent_path());
   AtomicFile file(target);
-  {
-    std::ofstream out(file.temporary_path(), std::ios::binary | std::ios::trunc);
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.close();
-    if (!out) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
-  }
+  if (!file.write(contents)) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
   file.commit();
   record_output(relative);
 }

@@ -35,6 +35,9 @@ class AtomicFile {
   const std::filesystem::path& final_path() const { return final_; }
   bool committed() const { return committed_; }
 
+  // Writes `contents` as the whole temporary file; false when it could not be written (each caller says so in
+  // its own error).
+  [[nodiscard]] bool write(std::string_view contents) const;
   void commit();   // rename temporary → final (replacing an older final file)
 
  private:
