@@ -1,22 +1,14 @@
 #include "io/tree_cell_data.hpp"
 
+#include "io/vtk_named_array.hpp"
+
 namespace heliostand {
-namespace {
-
-template <typename Array>
-vtkSmartPointer<Array> named(const char* name) {
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetName(name);
-  return array;
-}
-
-}  // namespace
 
 TreeCellData::TreeCellData()
-    : tree_id_(named<vtkIntArray>("tree_id")),
-      status_(named<vtkIntArray>("status")),
-      habitat_tree_(named<vtkIntArray>("habitat_tree")),
-      light_(named<vtkDoubleArray>("light")) {}
+    : tree_id_(named_array<vtkIntArray>("tree_id")),
+      status_(named_array<vtkIntArray>("status")),
+      habitat_tree_(named_array<vtkIntArray>("habitat_tree")),
+      light_(named_array<vtkDoubleArray>("light")) {}
 
 void TreeCellData::add(const TreeSnapshot& tree, vtkIdType cell_count) {
   for (vtkIdType i = 0; i < cell_count; ++i) {

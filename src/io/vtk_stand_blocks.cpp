@@ -1,6 +1,7 @@
 #include "io/vtk_stand_blocks.hpp"
 
 #include "io/vtk_crown_blocks.hpp"
+#include "io/vtk_named_array.hpp"
 
 #include <limits>
 #include <string_view>
@@ -18,14 +19,6 @@
 
 namespace heliostand {
 namespace {
-
-template <typename Array>
-vtkSmartPointer<Array> named_array(std::string_view name, vtkIdType reserve) {
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetName(std::string(name).c_str());
-  array->Allocate(reserve);
-  return array;
-}
 
 void add_point(vtkPoints& points, const glm::dvec3& p) { points.InsertNextPoint(p.x, p.y, p.z); }
 
