@@ -64,15 +64,19 @@ struct RunUnderTest {
   RunProgress progress{42, 12.5, "2026-11-23T08:00:00Z", "heliostand grow scenario.toml --out out"};
 };
 
+// The state of a run grown `years` years over `out`, saved as a killed run leaves it (the tables' temporaries are
+// renamed by the destructor: resuming takes them back).
+std::string saved_after(const Scenario& scenario, const compute::ComputeBackend& backend, const fs::path& out,
+                        int years) {
+  RunUnderTest grown(scenario, backend, out, years);
+  return save_run(grown.parts());
+}
+
 TEST(CheckpointState, ARestoredRunSavesTheSameBytesItWasRestoredFrom) {
   testing::TempFolder tmp("checkpoint_state");
   const Scenario scenario = tiny_with_roots(tmp.path());
   const auto backend = compute::ComputeBackend::open(compute::DeviceChoice::parse("reference"));
-  std::string saved;
-  {
-    RunUnderTest grown(scenario, backend, tmp.path() / "out", 2);
-    saved = save_run(grown.parts());
-  }  // as a killed run leaves it (the tables' temporaries are renamed by the destructor: resuming takes them back)
+  const std::string saved = saved_after(scenario, backend, tmp.path() / "out", 2);
   ASSERT_GT(saved.size(), 10000u);
   RunUnderTest resumed(scenario, backend, tmp.path() / "out", -1);
   load_run(saved, scenario, resumed.parts());
@@ -87,11 +91,7 @@ TEST(CheckpointState, ACutOrOutOfStepPayloadIsRefused) {
   testing::TempFolder tmp("checkpoint_state_other");
   const Scenario scenario = tiny_with_roots(tmp.path());
   const auto backend = compute::ComputeBackend::open(compute::DeviceChoice::parse("reference"));
-  std::string saved;
-  {
-    RunUnderTest grown(scenario, backend, tmp.path() / "out", 0);
-    saved = save_run(grown.parts());
-  }
+  std::string saved = saved_after(scenario, backend, tmp.path() / "out", 0);
   RunUnderTest resumed(scenario, backend, tmp.path() / "out", -1);
   EXPECT_THROW(load_run(saved.substr(0, saved.size() / 2), scenario, resumed.parts()), CheckpointError);
   saved[0] ^= 0x7f;  // the first section tag

@@ -36,18 +36,32 @@ std::vector<std::map<std::string, std::string>> read_rows(const std::filesystem:
   return rows;
 }
 
-TEST(StandYearOutput, StandTableEveryYearTreesOnlyInOutputYears) {
-  testing::TempFolder tmp("stand_year_output");
+// A 10 m × 10 m plot (one tree is 100 stems/ha) of two firs and a larch; the larch (tree "2") is thinned at 22.
+std::vector<StandTree> three_trees() {
   std::vector<StandTree> trees;
   trees.push_back(planted(0, "todomatsu", {2, 2, 0}));
   trees.push_back(planted(1, "karamatsu", {6, 3, 0}));
   trees.push_back(planted(2, "todomatsu", {4, 7, 0}));
+  return trees;
+}
+
+Stand stand_thinning_the_larch_at_22() {
   const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
-  Stand stand(0.01, 20, std::move(trees), {thin_larch});  // 10 m × 10 m: one tree is 100 stems/ha
+  return Stand(0.01, 20, three_trees(), {thin_larch});
+}
+
+// A coarse sky keeps the reference solver quick.
+ReferenceLightSolver coarse_sky_solver() {
   LightParameters sky;
   sky.sky_bands = 4;
   sky.sky_sectors = 8;
-  ReferenceLightSolver solver(sky);
+  return ReferenceLightSolver(sky);
+}
+
+TEST(StandYearOutput, StandTableEveryYearTreesOnlyInOutputYears) {
+  testing::TempFolder tmp("stand_year_output");
+  Stand stand = stand_thinning_the_larch_at_22();
+  ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
   StandOutput output({tmp.path() / "run", false, 100.0, false});
   StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
@@ -73,24 +87,12 @@ TEST(StandYearOutput, StandTableEveryYearTreesOnlyInOutputYears) {
       << "the stand table measures the trees trees.csv lists";
 }
 
-std::vector<StandTree> three_trees() {
-  std::vector<StandTree> trees;
-  trees.push_back(planted(0, "todomatsu", {2, 2, 0}));
-  trees.push_back(planted(1, "karamatsu", {6, 3, 0}));
-  trees.push_back(planted(2, "todomatsu", {4, 7, 0}));
-  return trees;
-}
-
 // Step 9 (memory): a tree thinned in a year that is not written keeps its crown until the next output year has
 // written it as removed, with the crown it had; then it gives the crown back.
 TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
   testing::TempFolder tmp("stand_year_release");
-  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
-  Stand stand(0.01, 20, three_trees(), {thin_larch});
-  LightParameters sky;
-  sky.sky_bands = 4;
-  sky.sky_sectors = 8;
-  ReferenceLightSolver solver(sky);
+  Stand stand = stand_thinning_the_larch_at_22();
+  ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
   StandOutput output({tmp.path() / "run", false, 100.0, false});
   StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
@@ -120,12 +122,8 @@ TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
 
 // Without outputs nothing reads a gone tree again: its crown goes at the end of the year it leaves.
 TEST(StandYearOutput, WithoutOutputsAGoneTreeGivesBackItsCrownAtOnce) {
-  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
-  Stand stand(0.01, 20, three_trees(), {thin_larch});
-  LightParameters sky;
-  sky.sky_bands = 4;
-  sky.sky_sectors = 8;
-  ReferenceLightSolver solver(sky);
+  Stand stand = stand_thinning_the_larch_at_22();
+  ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
   StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 3}, clock);
   for (int year = 0; year <= 1; ++year) simulated_year.run(year);
