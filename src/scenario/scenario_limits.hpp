@@ -91,10 +91,10 @@ inline constexpr ScenarioLimit mortality_growth_decay{100, "exp(-m2 G) is below 
                                                            "the rule is a step"};
 
 // The light field (seed 000) and the crown-root coupling (seed 003).
-inline constexpr ScenarioLimit sky_bands{max_sky_bands, "the light kernels keep a value per sky patch in private "
-                                                        "memory, at most 64 x 128 (light/light_parameters.hpp)"};
-inline constexpr ScenarioLimit sky_sectors{max_sky_sectors, "the light kernels keep a value per sky patch in private "
-                                                            "memory, at most 64 x 128 (light/light_parameters.hpp)"};
+inline constexpr const char* sky_patches_in_private_memory =
+    "the light kernels keep a value per sky patch in private memory, at most 64 x 128 (light/light_parameters.hpp)";
+inline constexpr ScenarioLimit sky_bands{max_sky_bands, sky_patches_in_private_memory};
+inline constexpr ScenarioLimit sky_sectors{max_sky_sectors, sky_patches_in_private_memory};
 inline constexpr ScenarioLimit intensity_ratio{1000, "C2 = C1/L: from L = 1000 the light from below is under 0.1 % "
                                                      "of the sky's (seed 000: 1.5)"};
 inline constexpr ScenarioLimit sky_scale{10, "seed 003's experiments dim the sky to x0.5 and x0.7; x10 is ten full "
