@@ -49,8 +49,8 @@ struct GenerationRecord {
 
 class CelestialSphere;
 
-// Seed 000's light of balls[receiver] through all the other balls (exact: every patch against every ball),
-// where a ball containing the receiver's centre casts no shadow on it.
+// Seed 000's light of balls[receiver] through all the other balls (exact: every patch ray that can reach a
+// ball is tested against it), where a ball containing the receiver's centre casts no shadow on it.
 LightSample kanamaru_light(const CelestialSphere& sky, const std::vector<LeafBall>& balls, std::size_t receiver,
                            double transmittance);
 
