@@ -17,6 +17,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -98,12 +99,33 @@ CrownMetrics mean_of(const std::vector<CrownMetrics>& all) {
   return m;
 }
 
+// A living crown stays within a few thousand tips: the largest this validation grows has about 1 400 at CI
+// size (Fig. 12, R = 1, 32 generations) and about 2 600 at the paper's (Fig. 13, D0 = 0.5, 40 generations;
+// docs/model.md), and the largest measured anywhere 6 700 (Fig. 5's bud sphere with I = 0.6 at 20 generations,
+// not run here). A model that no longer prunes by light doubles its tips every generation (2^G) and, the light
+// costing tips squared, would run for hours: past this budget the validation refuses the crown as a failure (a
+// runaway passes it at 16 384 tips, generation 14, within about a minute).
+constexpr std::size_t tip_budget = 10000;
+
+struct RunawayCrown : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void grow_within_budget(KanamaruGrowth& growth, DichotomyTree& tree, int generation) {
+  growth.grow(tree, generation, [](const DichotomyTree& grown) {
+    if (const std::size_t tips = grown.tips().size(); tips > tip_budget)
+      throw RunawayCrown(fmt::format("{} living tips at generation {}, over the budget of {} that a living crown "
+                                     "never reaches (light pruning has stopped working)",
+                                     tips, grown.generation(), tip_budget));
+  });
+}
+
 DichotomyTree grow_dichotomy(const KanamaruParameters& p, std::uint64_t seed, std::vector<int>* survivors = nullptr,
                              const std::vector<int>* prescribed = nullptr) {
   DichotomyTree tree({root_branch({0.0, 0.0, 0.0}, 15.0)}, p.branching_angle_deg, seed);
   KanamaruGrowth growth(p, seed);
   if (prescribed) growth.random_survivors = *prescribed;
-  growth.grow(tree, p.generations);
+  grow_within_budget(growth, tree, p.generations);
   if (survivors) {
     survivors->assign(1, 0);
     for (const auto& r : growth.history()) survivors->push_back(r.survived);
@@ -283,7 +305,7 @@ void figure11(const Size& size, Report& report, Gallery& gallery) {
       DichotomyTree tree({root_branch({-3.0, 0.0, 0.0}, 15.0, 0), root_branch({3.0, 0.0, 0.0}, 15.0, 1)},
                          p.branching_angle_deg, s);
       KanamaruGrowth growth(p, s);
-      growth.grow(tree, size.regrow_cut);
+      grow_within_budget(growth, tree, size.regrow_cut);
       auto record_shared = [&](std::vector<CrownShape>& shape, std::vector<double>& overlap) {
         shape.push_back(measure_crown_shape(crown_tips(tree), p.leaf_ball_radius));
         overlap.push_back(measure_crown(crown_tips(tree, 0)).max_x - measure_crown(crown_tips(tree, 1)).min_x);
@@ -292,7 +314,7 @@ void figure11(const Size& size, Report& report, Gallery& gallery) {
       if (s == 1 && !remove)
         gallery.show("fig11", title, fmt::format("(a) generation {}", size.regrow_cut), gallery.write(tree, p.leaf_ball_radius));
       if (remove) tree.remove_group(0);
-      growth.grow(tree, size.regrow_end);
+      grow_within_budget(growth, tree, size.regrow_end);
       if (!remove) record_shared(shared_at_end, overlap_at_end);
       if (s == 1)
         gallery.show("fig11", title,
@@ -424,7 +446,7 @@ BudCrown grow_from_buds(const KanamaruParameters& p, const std::vector<BudStart>
                         Gallery* gallery, const std::string& sweep, const std::string& title, const std::string& label) {
   DichotomyTree tree(starts, p.branching_angle_deg, seed);
   KanamaruGrowth growth(p, seed);
-  growth.grow(tree, p.generations);
+  grow_within_budget(growth, tree, p.generations);
   if (gallery) gallery->show(sweep, title, label, gallery->write(tree, p.leaf_ball_radius));
   return {measure_crown(crown_tips(tree)), measure_crown_shape(crown_tips(tree), p.leaf_ball_radius)};
 }
@@ -534,7 +556,11 @@ int validate(const std::string& out, bool full, const std::string& only) {
   for (const auto& [number, figure] : figures) {
     if (!only.empty() && ("," + only + ",").find("," + std::to_string(number) + ",") == std::string::npos) continue;
     const auto start = std::chrono::steady_clock::now();
-    figure(size, report, gallery);
+    try {
+      figure(size, report, gallery);
+    } catch (const RunawayCrown& runaway) {
+      report.check(false, fmt::format("Fig. {}: a crown ran away, the figure was stopped: {}", number, runaway.what()));
+    }
     std::cerr << "  (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
   }
   gallery.write_index();
