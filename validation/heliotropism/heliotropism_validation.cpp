@@ -4,13 +4,14 @@
 // heliotropism_metrics.md to the output folder and exits 1 when a finding does not hold. Each sweep's trees of the
 // first seed go to OUT_DIR/trees (one .vtp of branches and one of tips per tree, listed in trees/index.csv) for
 // render_sweeps.py, which draws them side by side like the paper's figure panels.
-//   heliotropism_validation validate OUT_DIR [--full] [--only 5,6,10]   (reduced sizes by default, see docs/model.md;
-//                                                                       --only: these figures alone)
+//   heliotropism_validation validate OUT_DIR [--full] [--only 5,6,10] [--seeds N]   (reduced sizes by default, see
+//                                           docs/model.md; --only: these figures alone; --seeds: N seeds per sweep)
 //   heliotropism_validation run SCENARIO.toml OUT_DIR    (one stands/kanamaru-* scenario)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -546,9 +547,11 @@ void figure6(const Size& size, Report& report, Gallery& gallery) {
 }
 
 // `only`: figure numbers to run ("5,6,10"), empty for all (the mutation harness runs the figures a break touches).
-int validate(const std::string& out, bool full, const std::string& only) {
+// `seeds`: when > 0, the seeds of every sweep (a paper-size figure too slow with 5 seeds on 2 cores; docs/model.md).
+int validate(const std::string& out, bool full, const std::string& only, int seeds) {
   Size size;
   if (full) size = Size::paper();
+  if (seeds > 0) size.seeds = size.outline_seeds = seeds;
   Report report;
   Gallery gallery(out);
   const std::vector<std::pair<int, void (*)(const Size&, Report&, Gallery&)>> figures{
@@ -589,15 +592,17 @@ int main(int argc, char** argv) {
   if (argc >= 3 && std::strcmp(argv[1], "validate") == 0) {
     bool full = false;
     std::string only;
+    int seeds = 0;
     for (int i = 3; i < argc; ++i) {
       if (std::strcmp(argv[i], "--full") == 0) full = true;
       else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
+      else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc && std::atoi(argv[i + 1]) > 0) seeds = std::atoi(argv[++i]);
       else {
         std::cerr << "heliotropism_validation validate: unknown option " << argv[i] << "\n";
         return 2;
       }
     }
-    return validate(argv[2], full, only);
+    return validate(argv[2], full, only, seeds);
   }
   if (argc == 4 && std::strcmp(argv[1], "run") == 0) {
     try {
@@ -611,6 +616,6 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::cerr << "usage: heliotropism_validation validate OUT_DIR [--full] [--only 5,6,10] | run SCENARIO.toml OUT_DIR\n";
+  std::cerr << "usage: heliotropism_validation validate OUT_DIR [--full] [--only 5,6,10] [--seeds N] | run SCENARIO.toml OUT_DIR\n";
   return 2;
 }
