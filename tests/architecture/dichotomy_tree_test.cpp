@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include <glm/geometric.hpp>
 
@@ -9,6 +10,8 @@
 #include "architecture/dichotomy_tree.hpp"
 #include "architecture/kanamaru_growth.hpp"
 #include "light/celestial_sphere.hpp"
+#include "light/light_sum.hpp"
+#include "light/occluders.hpp"
 #include "geometry/angles.hpp"
 
 namespace heliostand {
@@ -169,6 +172,44 @@ TEST(KanamaruLight, ABallBesideTheReceiverShadesItsSideAndTurnsTheLightVectorAwa
   // The same ball closer than its radius contains the receiver: no projection, no shadow.
   const std::vector<LeafBall> inside = {{{0, 0, 0}, 2.0}, {{1.5, 0, 0}, 2.0}};
   EXPECT_DOUBLE_EQ(kanamaru_light(sky, inside, 0, 0.5).light, 1.0);
+}
+
+// The seed's rule as stated: every patch ray against every other ball (kanamaru_light skips the patches outside
+// each ball's cone).
+LightSample every_patch_light(const CelestialSphere& sky, const std::vector<LeafBall>& balls, std::size_t receiver,
+                              double transmittance) {
+  const glm::dvec3 centre = balls[receiver].centre;
+  std::vector<double> intensity;
+  for (const auto& patch : sky.patches()) {
+    double b = patch.initial_intensity;
+    for (std::size_t j = 0; j < balls.size(); ++j) {
+      const glm::dvec3 d = balls[j].centre - centre;
+      if (j != receiver && glm::dot(d, d) > balls[j].radius * balls[j].radius &&
+          ray_hits_ball(centre, patch.direction, balls[j].centre, balls[j].radius))
+        b *= transmittance;
+    }
+    intensity.push_back(b);
+  }
+  return light_sample(sky, intensity);
+}
+
+TEST(KanamaruLight, SkippingPatchesOutsideEachBallsConeGivesTheSameLight) {
+  LightParameters light;
+  light.sky_bands = 16;
+  light.sky_sectors = 32;
+  const CelestialSphere sky(light);
+  // A crowded crown of balls of several radii, plus balls right above and below the receiver (the poles, where a
+  // cone spans every sector) and one just outside a receiver's reach.
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> across(-8.0, 8.0), radius(0.5, 2.5);
+  std::vector<LeafBall> balls{{{0, 0, 0}, 2.0}, {{0, 0, 2.1}, 2.0}, {{0, 0, -5}, 1.0}, {{2.0001, 0, 0}, 2.0}};
+  for (int i = 0; i < 300; ++i) balls.push_back({{across(random), across(random), across(random)}, radius(random)});
+  for (std::size_t receiver = 0; receiver < balls.size(); ++receiver) {
+    const LightSample culled = kanamaru_light(sky, balls, receiver, 0.5);
+    const LightSample reference = every_patch_light(sky, balls, receiver, 0.5);
+    ASSERT_EQ(culled.light, reference.light) << "receiver " << receiver;
+    ASSERT_EQ(culled.vector, reference.vector) << "receiver " << receiver;
+  }
 }
 
 TEST(KanamaruGrowth, RandomPruningKeepsThePrescribedSurvivors) {
