@@ -1,4 +1,4 @@
-# The mutation harness (validation/mutations/run.sh, on demand: ~25 minutes) applies each documented break as a
+# The mutation harness (validation/mutations/run.sh, on demand: ~20 minutes) applies each documented break as a
 # patch. A change to the code a patch touches would leave the break unappliable and the harness unable to prove
 # anything, so every patch must still apply to the committed sources (git apply --check, no change made). Skipped
 # (exit 77) where the sources are not a git checkout.
