@@ -101,7 +101,7 @@ CrownMetrics mean_of(const std::vector<CrownMetrics>& all) {
 }
 
 // A living crown stays within a few thousand tips: the largest this validation grows has about 1 400 at CI
-// size (Fig. 12, R = 1, 32 generations) and about 2 600 at the paper's (Fig. 13, D0 = 0.5, 40 generations;
+// size (Fig. 12, R = 1, 32 generations) and 4 293 at the paper's (Fig. 11's two trees at 60 generations, seed 1;
 // docs/model.md), and the largest measured anywhere 6 700 (Fig. 5's bud sphere with I = 0.6 at 20 generations,
 // not run here). A model that no longer prunes by light doubles its tips every generation (2^G) and, the light
 // costing tips squared, would run for hours: past this budget the validation refuses the crown as a failure (a
