@@ -6,7 +6,7 @@
 namespace heliostand {
 
 TreeSnapshot snapshot_of(const StandTree& stand_tree) {
-  const ConiferTree& tree = stand_tree.tree;
+  const ConiferTree& tree = stand_tree.conifer;
   TreeSnapshot snapshot;
   snapshot.id = stand_tree.id;
   snapshot.label = stand_tree.label;
@@ -37,7 +37,8 @@ StandInventory take_inventory(const Stand& stand, int year_index) {
   StandInventory inventory{stand.stand_age(), year_index, {}};
   for (const StandTree& tree : stand.trees())
     if (tree.alive())
-      inventory.living.push_back({tree.tree.dbh_cm(), tree.tree.height_m(), tree.tree.stem_volume_m3(), tree.species});
+      inventory.living.push_back(
+          {tree.conifer.dbh_cm(), tree.conifer.height_m(), tree.conifer.stem_volume_m3(), tree.species});
   return inventory;
 }
 
