@@ -62,7 +62,8 @@ class FoliageMesh {
     const glm::dvec3 along = shoot.tip - shoot.base;
     if (!(glm::length(along) > 1e-9)) return false;
     const ShootFrame frame = frame_of(glm::normalize(along));
-    const double thickness = width * (flat_thickness_fraction + (1.0 - flat_thickness_fraction) * std::abs(frame.axis.z));
+    const double verticality = std::abs(frame.axis.z);
+    const double thickness = width * (flat_thickness_fraction + (1.0 - flat_thickness_fraction) * verticality);
     const vtkIdType first = points_->GetNumberOfPoints();
     for (int k = 0; k < sides; ++k) {
       const double angle = 2.0 * std::numbers::pi * k / sides;

@@ -140,7 +140,8 @@ TEST_F(FoliageBlock, IsWrittenAtFullDetailOnly) {
     EXPECT_EQ(std::find(names.begin(), names.end(), "foliage"), names.end()) << name_of(lighter);
   }
   for (const StandBlock& block : stand_blocks(OutputDetail::full))
-    if (block.name == "foliage") EXPECT_EQ(block.build(stand_.snapshot)->GetNumberOfElements(vtkDataObject::CELL), ball_count());
+    if (block.name == "foliage")
+      EXPECT_EQ(block.build(stand_.snapshot)->GetNumberOfElements(vtkDataObject::CELL), ball_count());
 }
 
 }  // namespace
