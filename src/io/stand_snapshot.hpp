@@ -50,6 +50,7 @@ struct TreeSnapshot {
   std::span<const Shoot> shoots;
   std::vector<LeafBall> leaf_balls;
   std::vector<double> leaf_ball_light;  // one per leaf ball (same order), relative light 0..1; may be empty
+  std::vector<int> leaf_ball_shoot;     // one per leaf ball (same order): its shoot's index in `shoots`; may be empty
 
   // Hollows (docs/hollows.md): how many the tree carries (> 0: a habitat tree), and its stem as a surface in
   // the tree frame (stem base at the origin), hollows included. Null when trunks are not meshed (a removed

@@ -1,6 +1,7 @@
 #include "io/vtk_stand_blocks.hpp"
 
 #include "io/vtk_crown_blocks.hpp"
+#include "io/vtk_foliage_block.hpp"
 #include "io/vtk_named_array.hpp"
 
 #include <limits>
@@ -225,6 +226,7 @@ std::vector<StandBlock> stand_blocks(OutputDetail detail) {
       // The model's own view, and around each crown its envelope (issue 15: a crown a person recognises).
       std::vector<StandBlock> blocks = default_stand_blocks();
       blocks.push_back(block("crown_envelope", build_crown_envelope_block));
+      blocks.push_back(block("foliage", build_foliage_block));  // needle sprays where the leaf balls are
       return blocks;
     }
     case OutputDetail::envelope:

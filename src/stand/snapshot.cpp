@@ -29,6 +29,7 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
     for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
+    snapshot.leaf_ball_shoot = tree.foliage_shoot_indices();
   }
   return snapshot;
 }

@@ -79,7 +79,7 @@ class LevelsOfDetail : public ::testing::Test {
 TEST_F(LevelsOfDetail, EachLevelWritesItsBlocks) {
   const std::map<OutputDetail, std::vector<std::string>> expected = {
       // full also has `trunk`, but the synthetic trees have no stem mesh and VTK leaves an empty block out.
-      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope"}},
+      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope", "foliage"}},
       {OutputDetail::envelope, {"trees", "stem", "crown_envelope"}},
       {OutputDetail::cone, {"trees", "crown_cone"}}};
   for (const auto& [detail, names] : expected) {
