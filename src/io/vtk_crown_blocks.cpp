@@ -21,12 +21,18 @@ constexpr int hull_sphere_levels = 2;
 constexpr int cone_sides = 8;
 constexpr double envelope_merge_tolerance = 1e-6;  // of the crown size: corners closer than this are one
 
+// The leaf balls a crown is drawn around: the living foliage, or for a tree gone since the previous output year
+// the crown it had when it went (so the year shows the stand before its thinning).
+const std::vector<LeafBall>& crown_balls(const TreeSnapshot& tree) {
+  return tree.leaf_balls.empty() ? tree.crown_when_gone : tree.leaf_balls;
+}
+
 // Points of a tree's foliage: each leaf ball's six extreme points, so the hull encloses the balls, not only
 // their centres.
 vtkSmartPointer<vtkPolyData> foliage_extremes(const TreeSnapshot& tree) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
-  for (const LeafBall& ball : tree.leaf_balls)
+  for (const LeafBall& ball : crown_balls(tree))
     for (int axis = 0; axis < 3; ++axis)
       for (double side : {-1.0, 1.0}) {
         glm::dvec3 p = ball.centre;
@@ -124,7 +130,7 @@ vtkSmartPointer<vtkPolyData> build_stem_block(const StandSnapshot& snapshot) {
 
 vtkSmartPointer<vtkPolyData> build_crown_envelope_block(const StandSnapshot& snapshot) {
   return append_per_tree(snapshot, [](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
-    if (tree.leaf_balls.empty()) return nullptr;
+    if (crown_balls(tree).empty()) return nullptr;
     return crown_envelope(tree);
   });
 }
