@@ -14,9 +14,10 @@ stand_view.py. Or from a shell, in one command:
 
 pvbatch (headless; validation/paraview/run_pvbatch.sh runs it under Xvfb and checks the picture):
 
-    pvbatch heliostand_view.py STAND_PVD [--png OUT.png] [--age AGE]
+    pvbatch heliostand_view.py STAND_PVD [--png OUT.png] [--age AGE] [--living]
 
-draws the same view and saves it as a PNG (default: the last year), printing the PNG's path.
+draws the same view and saves it as a PNG (default: the last year), printing the PNG's path; --living leaves out
+the trees that died or were removed since the previous output year (the stand after that year's thinning).
 """
 import argparse
 import os
@@ -75,7 +76,7 @@ def in_gui(argv):
     Render(view)
 
 
-def picture(pvd, png, age=None):
+def picture(pvd, png, age=None, living_only=False):
     """pvbatch: the standard view of `pvd` at stand age `age` (default: the last year) saved to `png`. Returns
     (view, {block: shown source}, the age drawn)."""
     reader = PVDReader(FileName=pvd)
@@ -86,7 +87,7 @@ def picture(pvd, png, age=None):
         raise SystemExit("error: %s: no output year at stand age %g (have %s)" %
                          (pvd, age, ", ".join("%g" % t for t in times)))
     view = new_view(IMAGE_SIZE, SKY)
-    shown = standard_view(reader, pvd, view)
+    shown = standard_view(reader, pvd, view, living_only)
     view.ViewTime = age
     Render(view)
     SaveScreenshot(png, view, ImageResolution=IMAGE_SIZE)
@@ -98,11 +99,13 @@ def batch(argv):
     parser.add_argument("pvd")
     parser.add_argument("--png", default="heliostand_view.png")
     parser.add_argument("--age", type=float)
+    parser.add_argument("--living", action="store_true",
+                        help="only the living trees: the stand after the year's thinning")
     args = parser.parse_args(argv[1:])
     if not os.path.isfile(args.pvd):
         sys.stderr.write("error: %s: no such file\n" % args.pvd)
         return 2
-    view, _, _ = picture(args.pvd, args.png, args.age)
+    view, _, _ = picture(args.pvd, args.png, args.age, args.living)
     print(args.png)
     Delete(view)  # release the render window while the X display still exists (see render_stand.py)
     return 0

@@ -12,8 +12,8 @@ import xml.etree.ElementTree as ElementTree
 
 from pvbatch_common import radius_tubes
 
-from paraview.simple import (AnnotateTimeFilter, ColorBy, ExtractBlock, GetColorTransferFunction, GetScalarBar, Glyph,
-                             Plane, Show, Tube)
+from paraview.simple import (AnnotateTimeFilter, ColorBy, ExtractBlock, ExtractSurface, GetColorTransferFunction,
+                             GetScalarBar, Glyph, Plane, Show, Threshold, Tube)
 
 BARK = [0.45, 0.30, 0.18]
 GROUND = [0.55, 0.62, 0.45]
@@ -24,12 +24,16 @@ LIGHT_PRESET = "Viridis (matplotlib)"
 ROOT_LINE_PIXELS = 2.0
 
 
-def block(reader, name):
+def block(reader, name, living_only=False):
     """One named block of the yearly multiblock (empty if absent that year). It stays a multiblock of
-    polydata, which Tube and Glyph accept; MergeBlocks would turn it into an unstructured grid."""
+    polydata, which Tube and Glyph accept; MergeBlocks would turn it into an unstructured grid. `living_only`:
+    only the cells of living trees (`status` 0), i.e. the stand after the year's thinning."""
     extract = ExtractBlock(Input=reader)
     extract.Selectors = ["/Root/" + name]
-    return extract
+    if not living_only:
+        return extract
+    living = Threshold(Input=extract, Scalars=["CELLS", "status"], LowerThreshold=0, UpperThreshold=0)
+    return ExtractSurface(Input=living)  # Threshold gives unstructured grids; Tube and Glyph want polydata
 
 
 def colour_by_light(display, association, view):
@@ -140,9 +144,9 @@ def blocks_to_draw(pvd):
     return [(name, show) for name, show in BLOCK_DISPLAYS if name in present]
 
 
-def show_stand(reader, pvd, view):
+def show_stand(reader, pvd, view, living_only=False):
     """Draws every block of the series the standard way and the stand age. Returns {block name: shown source}."""
-    shown = {name: show(block(reader, name), view) for name, show in blocks_to_draw(pvd)}
+    shown = {name: show(block(reader, name, living_only), view) for name, show in blocks_to_draw(pvd)}
     show_age(reader, view)
     return shown
 
@@ -195,9 +199,10 @@ def time_steps(reader):
         return [values]
 
 
-def standard_view(reader, pvd, view):
-    """The whole standard view on `view`, framed on the last (largest) year. Returns {block: shown source}."""
-    shown = show_stand(reader, pvd, view)
+def standard_view(reader, pvd, view, living_only=False):
+    """The whole standard view on `view`, framed on the last (largest) year. Returns {block: shown source}.
+    `living_only`: leave out the trees that died or were removed since the previous output year."""
+    shown = show_stand(reader, pvd, view, living_only)
     last = time_steps(reader)[-1]
     view.ViewTime = last
     reader.UpdatePipeline(last)
