@@ -1,5 +1,8 @@
 #include "io/vtk_crown_blocks.hpp"
 
+#include <limits>
+
+#include <glm/geometric.hpp>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -11,6 +14,7 @@
 #include <vtkPoints.h>
 
 #include "io/tree_cell_data.hpp"
+#include "io/vtk_named_array.hpp"
 
 namespace heliostand {
 namespace {
@@ -44,6 +48,28 @@ vtkSmartPointer<vtkPolyData> foliage_extremes(const TreeSnapshot& tree) {
   return cloud;
 }
 
+// The light at each corner of a crown envelope: that of the leaf ball whose surface is nearest (every corner is an
+// extreme point of some ball), so the envelope shows a lit top and a shaded base, not one mean colour. NaN when the
+// tree has no light values (a tree gone since the previous output year).
+vtkSmartPointer<vtkDoubleArray> light_at_corners(const TreeSnapshot& tree, vtkPolyData& envelope) {
+  const std::vector<LeafBall>& balls = crown_balls(tree);
+  const bool lit = tree.leaf_ball_light.size() == balls.size();
+  auto light = named_array<vtkDoubleArray>("light", envelope.GetNumberOfPoints());
+  for (vtkIdType p = 0; p < envelope.GetNumberOfPoints(); ++p) {
+    double corner[3];
+    envelope.GetPoint(p, corner);
+    const glm::dvec3 at(corner[0], corner[1], corner[2]);
+    std::size_t nearest = 0;
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < balls.size(); ++b) {
+      const double d = glm::length(at - balls[b].centre) - balls[b].radius;
+      if (d < gap) gap = d, nearest = b;
+    }
+    light->InsertNextValue(lit ? tree.leaf_ball_light[nearest] : std::numeric_limits<double>::quiet_NaN());
+  }
+  return light;
+}
+
 vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
   auto hull = vtkSmartPointer<vtkHull>::New();
   hull->SetInputData(foliage_extremes(tree));
@@ -59,7 +85,10 @@ vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
   auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
   surface->SetInputConnection(tetrahedra->GetOutputPort());
   surface->Update();
-  return surface->GetOutput();
+  vtkSmartPointer<vtkPolyData> envelope = surface->GetOutput();
+  envelope->GetPointData()->Initialize();
+  envelope->GetPointData()->AddArray(light_at_corners(tree, *envelope));
+  return envelope;
 }
 
 vtkSmartPointer<vtkPolyData> crown_cone(const TreeSnapshot& tree) {
@@ -90,7 +119,9 @@ vtkSmartPointer<vtkPolyData> append_per_tree(const StandSnapshot& snapshot, Piec
   if (append->GetNumberOfInputConnections(0) == 0) return block;
   append->Update();
   block->ShallowCopy(append->GetOutput());
+  vtkSmartPointer<vtkDataArray> light = block->GetPointData()->GetArray("light");  // the envelope's, per corner
   block->GetPointData()->Initialize();  // the sources' normals and texture coordinates are not ours
+  if (light) block->GetPointData()->AddArray(light);
   block->GetCellData()->Initialize();
   cells.attach_to(*block->GetCellData());
   return block;
