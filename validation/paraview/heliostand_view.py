@@ -39,7 +39,7 @@ def _shared_modules_folder():
 
 sys.path.insert(0, _shared_modules_folder())
 from pvbatch_common import new_view  # noqa: E402
-from stand_view import SKY, standard_view, time_steps  # noqa: E402
+from stand_view import LIVING, SKY, standard_view, time_steps  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import (Delete, GetActiveSource, GetActiveViewOrCreate, GetAnimationScene, PVDReader,  # noqa: E402
@@ -87,7 +87,7 @@ def picture(pvd, png, age=None, living_only=False):
         raise SystemExit("error: %s: no output year at stand age %g (have %s)" %
                          (pvd, age, ", ".join("%g" % t for t in times)))
     view = new_view(IMAGE_SIZE, SKY)
-    shown = standard_view(reader, pvd, view, living_only)
+    shown = standard_view(reader, pvd, view, LIVING if living_only else None)
     view.ViewTime = age
     Render(view)
     SaveScreenshot(png, view, ImageResolution=IMAGE_SIZE)

@@ -24,16 +24,21 @@ LIGHT_PRESET = "Viridis (matplotlib)"
 ROOT_LINE_PIXELS = 2.0
 
 
-def block(reader, name, living_only=False):
+# Cell filters for `only`: (tree attribute, lowest, highest value kept).
+LIVING = ("status", 0, 0)  # the living trees: the stand after the year's thinning
+
+
+def block(reader, name, only=None):
     """One named block of the yearly multiblock (empty if absent that year). It stays a multiblock of
-    polydata, which Tube and Glyph accept; MergeBlocks would turn it into an unstructured grid. `living_only`:
-    only the cells of living trees (`status` 0), i.e. the stand after the year's thinning."""
+    polydata, which Tube and Glyph accept; MergeBlocks would turn it into an unstructured grid. `only`: keep the
+    cells whose tree attribute is in a range, e.g. LIVING or ("tree_id", 7, 7)."""
     extract = ExtractBlock(Input=reader)
     extract.Selectors = ["/Root/" + name]
-    if not living_only:
+    if only is None:
         return extract
-    living = Threshold(Input=extract, Scalars=["CELLS", "status"], LowerThreshold=0, UpperThreshold=0)
-    return ExtractSurface(Input=living)  # Threshold gives unstructured grids; Tube and Glyph want polydata
+    array, low, high = only
+    kept = Threshold(Input=extract, Scalars=["CELLS", array], LowerThreshold=low, UpperThreshold=high)
+    return ExtractSurface(Input=kept)  # Threshold gives unstructured grids; Tube and Glyph want polydata
 
 
 def colour_by_light(display, association, view):
@@ -93,8 +98,17 @@ def show_leaf_balls(source, view):
 
 
 def show_crowns(source, view):
-    """Crown envelopes or cones, coloured by their tree's light (cell data)."""
+    """Crown cones, coloured by their tree's mean light (cell data)."""
     colour_by_light(Show(source, view), "CELLS", view)
+    return source
+
+
+def show_envelopes(source, view):
+    """Crown envelopes, coloured by the light at each corner (point data: the nearest leaf ball's), so a crown
+    shows its lit top and shaded base; series written before the envelopes had it: their tree's mean (cell data)."""
+    source.UpdatePipeline()
+    corners = "light" in source.PointData.keys()
+    colour_by_light(Show(source, view), "POINTS" if corners else "CELLS", view)
     return source
 
 
@@ -115,7 +129,7 @@ BLOCK_DISPLAYS = [
     ("stem", show_stem),
     ("trunk", show_trunk),
     ("leaf_balls", show_leaf_balls),
-    ("crown_envelope", show_crowns),
+    ("crown_envelope", show_envelopes),
     ("crown_cone", show_crowns),
     ("roots", show_roots),
 ]
@@ -144,9 +158,9 @@ def blocks_to_draw(pvd):
     return [(name, show) for name, show in BLOCK_DISPLAYS if name in present]
 
 
-def show_stand(reader, pvd, view, living_only=False):
+def show_stand(reader, pvd, view, only=None):
     """Draws every block of the series the standard way and the stand age. Returns {block name: shown source}."""
-    shown = {name: show(block(reader, name, living_only), view) for name, show in blocks_to_draw(pvd)}
+    shown = {name: show(block(reader, name, only), view) for name, show in blocks_to_draw(pvd)}
     show_age(reader, view)
     return shown
 
@@ -199,10 +213,11 @@ def time_steps(reader):
         return [values]
 
 
-def standard_view(reader, pvd, view, living_only=False):
+def standard_view(reader, pvd, view, only=None):
     """The whole standard view on `view`, framed on the last (largest) year. Returns {block: shown source}.
-    `living_only`: leave out the trees that died or were removed since the previous output year."""
-    shown = show_stand(reader, pvd, view, living_only)
+    `only`: the cells to keep (block()), e.g. LIVING leaves out the trees that died or were removed since the
+    previous output year."""
+    shown = show_stand(reader, pvd, view, only)
     last = time_steps(reader)[-1]
     view.ViewTime = last
     reader.UpdatePipeline(last)
