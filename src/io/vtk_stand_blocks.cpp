@@ -1,5 +1,6 @@
 #include "io/vtk_stand_blocks.hpp"
 
+#include "io/tree_cell_data.hpp"
 #include "io/vtk_crown_blocks.hpp"
 #include "io/vtk_foliage_block.hpp"
 #include "io/vtk_named_array.hpp"
@@ -246,6 +247,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> build_stand_multiblock(const StandSnapshot
   multiblock->SetNumberOfBlocks(static_cast<unsigned>(blocks.size()));
   for (unsigned i = 0; i < blocks.size(); ++i) {
     vtkSmartPointer<vtkDataObject> block = blocks[i]->build(snapshot);
+    if (auto* cells = vtkPolyData::SafeDownCast(block)) add_tree_cell_data(*cells, snapshot);
     stamp_time(*block, snapshot);
     multiblock->SetBlock(i, block);
     multiblock->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), blocks[i]->name.c_str());

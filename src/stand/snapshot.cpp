@@ -24,12 +24,15 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   snapshot.relative_light = stand_tree.light_budget.relative();
   snapshot.dbh_increment_cm = tree.last_dbh_increment_cm();
   snapshot.status_reason = stand_tree.status_reason;
+  snapshot.gone_at_age = stand_tree.alive() ? -1 : stand_tree.status_changed_at_age;
   snapshot.shoots = tree.shoots();
   snapshot.hollow_count = static_cast<int>(stand_tree.hollows.size());
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
     for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
     snapshot.leaf_ball_shoot = tree.foliage_shoot_indices();
+  } else {
+    snapshot.crown_when_gone = tree.leaf_balls();  // kept until its one gone year is written (StandYear)
   }
   return snapshot;
 }
