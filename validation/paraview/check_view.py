@@ -5,7 +5,7 @@
 Draws the macro's picture of one year (default: the last) into OUT.png, prints its path (run_pvbatch.sh then checks
 the picture: not blank, several colours), and checks against trees.csv and the year's multiblock:
 - every block of the year is drawn, except those the view leaves out on purpose (`trees`, `soil`, and
-  `crown_envelope` when `branches` is drawn), and each is visible;
+  `crown_envelope` when `branches` is drawn, `leaf_balls` when `foliage` is), and each is visible;
 - the trees the drawn blocks show (distinct `tree_id`) are the trees trees.csv lists at that age: the stem or
   branches of every one of them, the foliage of every living tree with leaf balls, and nothing of another tree.
 Exit status 1 with a message when something is missing.
@@ -23,7 +23,7 @@ from paraview.simple import Delete, GetDisplayProperties  # noqa: E402
 
 NOT_DRAWN = {"trees", "soil"}
 WOOD = {"branches", "stem"}        # every tree of the year
-FOLIAGE = {"leaf_balls", "crown_envelope", "crown_cone"}  # at least every living tree with leaf balls
+FOLIAGE = {"leaf_balls", "foliage", "crown_envelope", "crown_cone"}  # at least every living tree with leaf balls
 
 
 def trees_at(trees_csv, age):
@@ -67,6 +67,8 @@ def problems_of(pvd, trees_csv, shown, age):
     expected = blocks_in_year(pvd, age) - NOT_DRAWN
     if "branches" in expected:
         expected.discard("crown_envelope")
+    if "foliage" in expected:
+        expected.discard("leaf_balls")
     problems = ["block %s is in the year but not drawn" % b for b in sorted(expected - set(shown))]
     trees = trees_at(trees_csv, age)
     if not trees:

@@ -1,6 +1,6 @@
 """Open a heliostand series (stand.pvd) in ParaView with the standard view, in one step.
 
-The standard view (stand_view.py): stems and branches as tubes of their wood radius, trunks, foliage (leaf balls,
+The standard view (stand_view.py): stems and branches as tubes of their wood radius, trunks, foliage (needle sprays,
 crown envelopes or cones) coloured by light on one fixed 0..1 scale with its legend, roots below a
 half-transparent ground, the stand age in a corner. Play the time steps to see the stand grow.
 

@@ -97,6 +97,13 @@ def show_leaf_balls(source, view):
     return spheres
 
 
+def show_foliage(source, view):
+    """Needle sprays (detail `full`): one piece around each living foliage-year shoot, as wide as the leaf ball it
+    stands for, coloured by that ball's light (point data)."""
+    colour_by_light(Show(source, view), "POINTS", view)
+    return source
+
+
 def show_crowns(source, view):
     """Crown cones, coloured by their tree's mean light (cell data)."""
     colour_by_light(Show(source, view), "CELLS", view)
@@ -129,6 +136,7 @@ BLOCK_DISPLAYS = [
     ("stem", show_stem),
     ("trunk", show_trunk),
     ("leaf_balls", show_leaf_balls),
+    ("foliage", show_foliage),
     ("crown_envelope", show_envelopes),
     ("crown_cone", show_crowns),
     ("roots", show_roots),
@@ -151,10 +159,13 @@ def series_blocks(pvd):
 
 def blocks_to_draw(pvd):
     """The blocks of BLOCK_DISPLAYS the series holds. At `full` the crown envelopes would hide the shoots and
-    leaf balls they enclose: those are drawn instead."""
+    leaf balls they enclose: those are drawn instead; and the leaf balls would hide the needle foliage that stands
+    for them (they stay in the files as the model's own view: draw the block `leaf_balls` to see them)."""
     present = series_blocks(pvd)
     if "branches" in present:
         present.discard("crown_envelope")
+    if "foliage" in present:
+        present.discard("leaf_balls")
     return [(name, show) for name, show in BLOCK_DISPLAYS if name in present]
 
 
