@@ -18,6 +18,7 @@
 #include "architecture/stem_taper.hpp"
 #include "architecture/whorl.hpp"
 #include "geometry/angles.hpp"
+#include "geometry/compass_sector.hpp"
 #include "rng/random_stream.hpp"
 
 namespace heliostand {
@@ -326,9 +327,7 @@ void ConiferTree::sprout_laterals(int parent_axis, int bearing_shoot) {
 double ConiferTree::with_branching_bonus(double probability, int axis_index) const {
   const int first_order = axes_[axis_index].first_order_root;
   if (probability <= 0.0 || first_order < 0) return probability;
-  double azimuth = std::fmod(axes_[first_order].azimuth_rad, 2.0 * pi);
-  if (azimuth < 0.0) azimuth += 2.0 * pi;
-  const int path = std::clamp(static_cast<int>(azimuth / (pi / 4.0)), 0, 7);
+  const int path = compass_sector(axes_[first_order].azimuth_rad);
   return std::clamp(probability + branching_bonus_[path], 0.0, 1.0);
 }
 
@@ -520,21 +519,19 @@ std::vector<int> ConiferTree::foliage_shoot_indices() const {
   return indices;
 }
 
-// Mean over 8 azimuth sectors (45° each, around the stem) of the farthest horizontal reach of living foliage:
+// Mean over the 8 compass sectors (45° each, around the stem) of the farthest horizontal reach of living foliage:
 // leaf-ball centre distance from the stem axis plus the ball radius. An empty sector counts 0.
 double ConiferTree::crown_radius_m() const {
-  std::array<double, 8> reach{};
+  std::array<double, compass_sector_count> reach{};
   for (const LeafBall& ball : leaf_balls()) {
     const glm::dvec3 offset = ball.centre - stem_base_;
     const double distance = std::hypot(offset.x, offset.y);
-    double azimuth = std::atan2(offset.y, offset.x);
-    if (azimuth < 0.0) azimuth += 2.0 * pi;
-    const int sector = std::min(7, static_cast<int>(azimuth / (pi / 4.0)));
+    const int sector = compass_sector_of(offset);
     reach[sector] = std::max(reach[sector], distance + ball.radius);
   }
   double sum = 0.0;
   for (double r : reach) sum += r;
-  return sum / 8.0;
+  return sum / compass_sector_count;
 }
 
 std::size_t ConiferTree::living_shoot_count() const {

@@ -85,7 +85,7 @@ class ConiferTree {
   const SpeciesParameters& species() const { return species_; }
   const TreeCalibration& calibration() const { return calibration_; }
 
-  // Hooks for the light response (DESIGN.md step 3), used after grow_year():
+  // Hooks for the light response (docs/architecture.md, the simulated year, step 3), used after grow_year():
   std::vector<int> new_shoot_indices() const;  // the shoots that flushed this year
   // Turn a shoot to a new direction about its base, keeping its length; everything it carries moves with it.
   void bend_shoot(int shoot_index, glm::dvec3 direction);

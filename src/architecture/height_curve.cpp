@@ -4,7 +4,7 @@
 
 namespace heliostand {
 
-double height_curve_exponent(const SpeciesParameters& species) { return 1.0 / (1.0 - species.height_m); }
+double height_curve_exponent(const SpeciesParameters& species) { return 1.0 / (1.0 - species.height_exponent_m); }
 
 // The fraction of the asymptote reached at age t: (1 - exp(-k t))^p.
 static double height_fraction(const SpeciesParameters& species, double age_years) {

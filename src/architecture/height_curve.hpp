@@ -1,6 +1,6 @@
 #pragma once
 // Seed 001 eq. 1: the stem's height over age, a Chapman–Richards curve H(t) = A (1 - exp(-k t))^p.
-// The seed's exponent was lost in print; we read it as p = 1/(1 - m) (MODEL.md §2, docs/model.md):
+// The seed's exponent was lost in print; we read it as p = 1/(1 - m) (docs/model.md):
 // with A = 28, k = 0.0348, m = 0.3639 this gives about 4 m at 10, 16 m at 35 and 23 m at 60 years.
 #include "architecture/species.hpp"
 

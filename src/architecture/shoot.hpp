@@ -3,6 +3,8 @@
 // at its tip while it is alive and growing), thickens, dies and falls.
 #include <glm/vec3.hpp>
 
+#include "light/leaf_ball.hpp"  // a living shoot's foliage, as the light field sees it
+
 namespace heliostand {
 
 struct Shoot {
@@ -21,12 +23,6 @@ struct Shoot {
   double light = 1.0;           // Σ B S / Σ B0 S of the ball in the stand, 0..1
   double relative_light = 1.0;  // light in the stand / light with its tree alone under the reference sky, 0..1
   glm::dvec3 light_vector{0.0, 0.0, 1.0};  // normalize(Σ N B S) of the same ball: where its light comes from
-};
-
-// The foliage of one living shoot (seed 000): a sphere centred at the shoot tip.
-struct LeafBall {
-  glm::dvec3 centre{0.0};   // m
-  double radius = 0;        // m
 };
 
 }  // namespace heliostand

@@ -14,10 +14,10 @@ inline constexpr std::string_view whole_stand_species = "all";
 struct SpeciesParameters {
   std::string name = "todomatsu";
 
-  // eq. 1  height = A (1 - exp(-k t))^p with p = 1/(1-m) (Chapman–Richards; see MODEL.md §2 ambiguity).
+  // eq. 1  height = A (1 - exp(-k t))^p with p = 1/(1-m) (Chapman–Richards; why p: docs/model.md).
   double site_asymptote_m = 28.0;  // A, site class 1, site index 2.8
   double height_k = 0.0348;        // k
-  double height_m = 0.3639;        // m
+  double height_exponent_m = 0.3639;  // m, unitless (the scenario key is height_m, as the paper names it)
 
   // eq. 2  stem diameter (cm) at height h = a2 (H - h)^b2, inside / below the live crown (Hakodate co-dominants).
   double stem_a_in_crown = 2.245;

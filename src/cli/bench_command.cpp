@@ -90,7 +90,7 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
   light->callback([options, output] {
-    // stdout carries the JSON: progress lines go to stderr (DESIGN.md: logs on stderr)
+    // stdout carries the JSON: progress lines go to stderr (logs always go to stderr)
     if (!spdlog::get("heliostand-bench")) spdlog::set_default_logger(spdlog::stderr_color_mt("heliostand-bench"));
     print_json(run_light_benchmark(*options), *output);
   });

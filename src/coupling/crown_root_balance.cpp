@@ -3,22 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/angles.hpp"
+#include "geometry/compass_sector.hpp"
 
 namespace heliostand {
-
-int path_of_azimuth(double azimuth_rad) {
-  double a = std::fmod(azimuth_rad, 2.0 * pi);
-  if (a < 0.0) a += 2.0 * pi;
-  return std::clamp(static_cast<int>(a / (pi / 4.0)), 0, crown_path_count - 1);
-}
 
 int crown_path_of_shoot(const ConiferTree& tree, int shoot_index) {
   const auto& axes = tree.axes();
   const int axis = tree.shoots().at(static_cast<std::size_t>(shoot_index)).axis;
   const int first_order = axes.at(static_cast<std::size_t>(axis)).first_order_root;
   if (first_order < 0) return -1;  // the trunk (leader)
-  return path_of_azimuth(axes[static_cast<std::size_t>(first_order)].azimuth_rad);
+  return compass_sector(axes[static_cast<std::size_t>(first_order)].azimuth_rad);
 }
 
 PathValues light_by_path(const ConiferTree& tree, std::span<const LightSample> light, double sky_scale) {

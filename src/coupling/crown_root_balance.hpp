@@ -12,15 +12,15 @@
 
 #include "architecture/conifer_tree.hpp"
 #include "coupling/coupling_parameters.hpp"
+#include "geometry/compass_sector.hpp"
 #include "light/light_solver.hpp"
 
 namespace heliostand {
 
-inline constexpr int crown_path_count = 8;
+// The crown's paths are the compass sectors of its first-order boughs (geometry/compass_sector.hpp), the same as
+// the roots' (roots::path_count), so light and uptake of path n meet in one sector.
+inline constexpr int crown_path_count = compass_sector_count;
 using PathValues = std::array<double, crown_path_count>;
-
-// Sector 0..7 of an azimuth (radians, counter-clockwise from +x).
-int path_of_azimuth(double azimuth_rad);
 
 // Path of a shoot: the sector of its first-order branch's azimuth on the trunk; −1 for the trunk itself.
 int crown_path_of_shoot(const ConiferTree& tree, int shoot_index);

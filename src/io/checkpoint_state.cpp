@@ -146,7 +146,7 @@ struct Access {
     out.raw(tree.id);
     out.text(tree.label);
     out.text(tree.species);
-    save(out, tree.tree);
+    save(out, tree.conifer);
     out.raw(tree.status);
     out.raw(tree.status_changed_at_age);
     out.text(tree.status_reason);
@@ -164,7 +164,7 @@ struct Access {
       throw CheckpointError(fmt::format("holds tree '{}' ({}) where the survey has '{}' ({})", label, species,
                                         record.id, record.species));
     StandTree tree{.id = id, .label = std::move(label), .species = std::move(species),
-                   .tree = load_tree(in, scenario.species_of(record)), .status = TreeStatus::alive,
+                   .conifer = load_tree(in, scenario.species_of(record)), .status = TreeStatus::alive,
                    .status_changed_at_age = -1, .status_reason = {}, .hollows = {}, .light_budget = {}};
     in.raw_into(tree.status, "tree status");
     in.raw_into(tree.status_changed_at_age, "tree status age");

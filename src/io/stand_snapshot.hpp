@@ -38,6 +38,7 @@ struct TreeSnapshot {
   double relative_light = std::numeric_limits<double>::quiet_NaN();
   double dbh_increment_cm = 0;      // this year's DBH increment
   std::string status_reason;        // cause of death or thinning reason; empty while alive
+  int gone_at_age = -1;             // stand age of its death or removal; -1 while alive
   // Roots (stand/root_zone.hpp, filled by RootZone::annotate); NaN when roots are off or the tree is gone.
   double root_length_m = std::numeric_limits<double>::quiet_NaN();
   double root_max_depth_m = std::numeric_limits<double>::quiet_NaN();
@@ -50,6 +51,11 @@ struct TreeSnapshot {
   std::span<const Shoot> shoots;
   std::vector<LeafBall> leaf_balls;
   std::vector<double> leaf_ball_light;  // one per leaf ball (same order), relative light 0..1; may be empty
+  std::vector<int> leaf_ball_shoot;     // one per leaf ball (same order): its shoot's index in `shoots`; may be empty
+  // A tree gone (dead or removed) since the previous output year is written once more, with the crown it had
+  // when it went, so the year's VTK shows the stand before the thinning too (a Threshold on status shows it
+  // after). `leaf_balls` stays empty for it: trees.csv counts the living foliage.
+  std::vector<LeafBall> crown_when_gone;
 
   // Hollows (docs/hollows.md): how many the tree carries (> 0: a habitat tree), and its stem as a surface in
   // the tree frame (stem base at the origin), hollows included. Null when trunks are not meshed (a removed

@@ -1,5 +1,8 @@
 #include "io/vtk_crown_blocks.hpp"
 
+#include <limits>
+
+#include <glm/geometric.hpp>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -11,6 +14,7 @@
 #include <vtkPoints.h>
 
 #include "io/tree_cell_data.hpp"
+#include "io/vtk_named_array.hpp"
 
 namespace heliostand {
 namespace {
@@ -21,12 +25,18 @@ constexpr int hull_sphere_levels = 2;
 constexpr int cone_sides = 8;
 constexpr double envelope_merge_tolerance = 1e-6;  // of the crown size: corners closer than this are one
 
+// The leaf balls a crown is drawn around: the living foliage, or for a tree gone since the previous output year
+// the crown it had when it went (so the year shows the stand before its thinning).
+const std::vector<LeafBall>& crown_balls(const TreeSnapshot& tree) {
+  return tree.leaf_balls.empty() ? tree.crown_when_gone : tree.leaf_balls;
+}
+
 // Points of a tree's foliage: each leaf ball's six extreme points, so the hull encloses the balls, not only
 // their centres.
 vtkSmartPointer<vtkPolyData> foliage_extremes(const TreeSnapshot& tree) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
-  for (const LeafBall& ball : tree.leaf_balls)
+  for (const LeafBall& ball : crown_balls(tree))
     for (int axis = 0; axis < 3; ++axis)
       for (double side : {-1.0, 1.0}) {
         glm::dvec3 p = ball.centre;
@@ -36,6 +46,28 @@ vtkSmartPointer<vtkPolyData> foliage_extremes(const TreeSnapshot& tree) {
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
   cloud->SetPoints(points);
   return cloud;
+}
+
+// The light at each corner of a crown envelope: that of the leaf ball whose surface is nearest (every corner is an
+// extreme point of some ball), so the envelope shows a lit top and a shaded base, not one mean colour. NaN when the
+// tree has no light values (a tree gone since the previous output year).
+vtkSmartPointer<vtkDoubleArray> light_at_corners(const TreeSnapshot& tree, vtkPolyData& envelope) {
+  const std::vector<LeafBall>& balls = crown_balls(tree);
+  const bool lit = tree.leaf_ball_light.size() == balls.size();
+  auto light = named_array<vtkDoubleArray>("light", envelope.GetNumberOfPoints());
+  for (vtkIdType p = 0; p < envelope.GetNumberOfPoints(); ++p) {
+    double corner[3];
+    envelope.GetPoint(p, corner);
+    const glm::dvec3 at(corner[0], corner[1], corner[2]);
+    std::size_t nearest = 0;
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < balls.size(); ++b) {
+      const double d = glm::length(at - balls[b].centre) - balls[b].radius;
+      if (d < gap) gap = d, nearest = b;
+    }
+    light->InsertNextValue(lit ? tree.leaf_ball_light[nearest] : std::numeric_limits<double>::quiet_NaN());
+  }
+  return light;
 }
 
 vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
@@ -53,7 +85,10 @@ vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
   auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
   surface->SetInputConnection(tetrahedra->GetOutputPort());
   surface->Update();
-  return surface->GetOutput();
+  vtkSmartPointer<vtkPolyData> envelope = surface->GetOutput();
+  envelope->GetPointData()->Initialize();
+  envelope->GetPointData()->AddArray(light_at_corners(tree, *envelope));
+  return envelope;
 }
 
 vtkSmartPointer<vtkPolyData> crown_cone(const TreeSnapshot& tree) {
@@ -84,7 +119,9 @@ vtkSmartPointer<vtkPolyData> append_per_tree(const StandSnapshot& snapshot, Piec
   if (append->GetNumberOfInputConnections(0) == 0) return block;
   append->Update();
   block->ShallowCopy(append->GetOutput());
+  vtkSmartPointer<vtkDataArray> light = block->GetPointData()->GetArray("light");  // the envelope's, per corner
   block->GetPointData()->Initialize();  // the sources' normals and texture coordinates are not ours
+  if (light) block->GetPointData()->AddArray(light);
   block->GetCellData()->Initialize();
   cells.attach_to(*block->GetCellData());
   return block;
@@ -124,7 +161,7 @@ vtkSmartPointer<vtkPolyData> build_stem_block(const StandSnapshot& snapshot) {
 
 vtkSmartPointer<vtkPolyData> build_crown_envelope_block(const StandSnapshot& snapshot) {
   return append_per_tree(snapshot, [](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
-    if (tree.leaf_balls.empty()) return nullptr;
+    if (crown_balls(tree).empty()) return nullptr;
     return crown_envelope(tree);
   });
 }

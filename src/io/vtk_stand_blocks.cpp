@@ -1,6 +1,8 @@
 #include "io/vtk_stand_blocks.hpp"
 
+#include "io/tree_cell_data.hpp"
 #include "io/vtk_crown_blocks.hpp"
+#include "io/vtk_foliage_block.hpp"
 #include "io/vtk_named_array.hpp"
 
 #include <limits>
@@ -225,6 +227,7 @@ std::vector<StandBlock> stand_blocks(OutputDetail detail) {
       // The model's own view, and around each crown its envelope (issue 15: a crown a person recognises).
       std::vector<StandBlock> blocks = default_stand_blocks();
       blocks.push_back(block("crown_envelope", build_crown_envelope_block));
+      blocks.push_back(block("foliage", build_foliage_block));  // needle sprays where the leaf balls are
       return blocks;
     }
     case OutputDetail::envelope:
@@ -244,6 +247,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> build_stand_multiblock(const StandSnapshot
   multiblock->SetNumberOfBlocks(static_cast<unsigned>(blocks.size()));
   for (unsigned i = 0; i < blocks.size(); ++i) {
     vtkSmartPointer<vtkDataObject> block = blocks[i]->build(snapshot);
+    if (auto* cells = vtkPolyData::SafeDownCast(block)) add_tree_cell_data(*cells, snapshot);
     stamp_time(*block, snapshot);
     multiblock->SetBlock(i, block);
     multiblock->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), blocks[i]->name.c_str());

@@ -46,7 +46,7 @@ vtkSmartPointer<vtkPolyData> build_trunk_block(const StandSnapshot& snapshot);
 // branches, leaf_balls, trees, trunk — in that order (detail `full`).
 std::vector<StandBlock> default_stand_blocks();
 
-// The blocks of a level of detail (docs/formats.md): full — default_stand_blocks() and crown_envelope; envelope — trees, stem
+// The blocks of a level of detail (docs/formats.md): full — default_stand_blocks(), crown_envelope and foliage; envelope — trees, stem
 // (the stem axis as lines: the stem surface, `trunk`, is 70 kB a tree a year), crown_envelope; cone — trees,
 // crown_cone.
 std::vector<StandBlock> stand_blocks(OutputDetail detail);

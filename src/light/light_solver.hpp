@@ -11,7 +11,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "architecture/shoot.hpp"
+#include "light/leaf_ball.hpp"
 
 namespace heliostand {
 

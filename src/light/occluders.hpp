@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "architecture/shoot.hpp"
+#include "light/leaf_ball.hpp"
 #include "light/light_parameters.hpp"
 
 #include <span>

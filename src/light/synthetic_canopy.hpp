@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "architecture/shoot.hpp"
+#include "light/leaf_ball.hpp"
 
 namespace heliostand {
 

@@ -1,6 +1,6 @@
 #pragma once
-// One year of root growth for every tree of a stand (seed 003 + MODEL.md §5): all apices perceive the
-// soil and the roots of ALL trees (as they stood at the start of the year, so the result does not depend
+// One year of root growth for every tree of a stand (seed 003, all in one soil: docs/roots.md): all apices perceive
+// the soil and the roots of ALL trees (as they stood at the start of the year, so the result does not depend
 // on the order trees are visited), grow one segment each, age, die, and take up moisture and nutrients.
 #include <cstdint>
 #include <span>

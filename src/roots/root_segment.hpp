@@ -5,12 +5,13 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "geometry/compass_sector.hpp"
 #include "roots/root_type.hpp"
 
 namespace heliostand::roots {
 
-// The 8 paths of seed 003: 45° sectors around the main root, counted counter-clockwise from +x (east).
-inline constexpr int path_count = 8;
+// The 8 paths of seed 003: the compass sectors around the main root (geometry/compass_sector.hpp).
+inline constexpr int path_count = compass_sector_count;
 inline constexpr int no_sector = -1;  // the main root itself belongs to no single path
 
 struct RootSegment {

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "geometry/angles.hpp"
+#include "geometry/compass_sector.hpp"
 #include "rng/random_stream.hpp"
 #include "roots/root_direction.hpp"
 
@@ -98,12 +99,6 @@ glm::dvec3 keep_in_soil(const glm::dvec3& start, const glm::dvec3& direction, do
   return glm::clamp(start + length * heading, low, high);
 }
 
-int RootSystem::sector_of_direction(const glm::dvec3& direction) {
-  double azimuth = std::atan2(direction.y, direction.x);
-  if (azimuth < 0.0) azimuth += 2.0 * pi;
-  return std::min(path_count - 1, static_cast<int>(azimuth / radians(360.0 / path_count)));
-}
-
 void RootSystem::add_segment(const RootBud& bud, const glm::dvec3& direction, int year, const SoilGrid& soil) {
   RootSegment& from = segments_.at(bud.from_segment);
   const RootTypeParameters& type = parameters_.of(bud.type);
@@ -121,7 +116,7 @@ void RootSystem::add_segment(const RootBud& bud, const glm::dvec3& direction, in
   segment.growing = true;
   if (bud.type == RootType::main) segment.sector = no_sector;
   else if (from.sector != no_sector) segment.sector = from.sector;
-  else segment.sector = sector_of_direction(segment.end - segment.start);
+  else segment.sector = compass_sector_of(segment.end - segment.start);
   if (bud.continuation) from.growing = false;  // the apex moves on
   segments_.push_back(segment);  // invalidates `from`
 }

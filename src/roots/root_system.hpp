@@ -69,10 +69,10 @@ class RootSystem {
   void add_segment(const RootBud& bud, const glm::dvec3& direction, int year, const SoilGrid& soil);
   int finish_year(int year);  // returns the number of segments that died
 
-  // Path (0..7) of a segment: the sector of the angle where its route joins the main root; no_sector
+  // Path (0..7) of a segment: the compass sector (geometry/compass_sector.hpp) of the direction in which its route
+  // leaves the main root; no_sector
   // for the main root itself.
   int sector_of_tip(int segment) const { return segments_.at(segment).sector; }
-  static int sector_of_direction(const glm::dvec3& direction);
 
   // W_j = absorptive weight of the type × length × exp(−age / τ_u): capacity sits at the young tips.
   double uptake_capacity(const RootSegment& segment) const;

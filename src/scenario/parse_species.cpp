@@ -18,7 +18,7 @@ using S = SpeciesParameters;
 const std::array<ParameterField<S>, 52> species_fields{{
     {"site_asymptote_m", &S::site_asymptote_m, positive_up_to(limit::tree_height)},
     {"height_k", &S::height_k, positive_up_to(limit::height_k)},
-    {"height_m", &S::height_m, non_negative_up_to(limit::height_shape)},
+    {"height_m", &S::height_exponent_m, non_negative_up_to(limit::height_shape)},
     {"stem_a_in_crown", &S::stem_a_in_crown, positive_up_to(limit::taper_coefficient_cm)},
     {"stem_b_in_crown", &S::stem_b_in_crown, positive_up_to(limit::allometric_exponent)},
     {"stem_a_below_crown", &S::stem_a_below_crown, positive_up_to(limit::taper_coefficient_cm)},

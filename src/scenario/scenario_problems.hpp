@@ -1,6 +1,6 @@
 #pragma once
 // Collects every problem found in a scenario, each with its key path and the line toml++ gives for it,
-// so the user sees them all at once (DESIGN.md, Errors).
+// so the user sees them all at once (docs/formats.md, "Errors").
 #include <string>
 #include <vector>
 

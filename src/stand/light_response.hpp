@@ -1,6 +1,6 @@
 #pragma once
-// Seed 000's light response applied to a seed-001 conifer in the stand (MODEL.md §5): after the stand's yearly
-// light solve, every shoot that flushed this year
+// Seed 000's light response applied to a seed-001 conifer in the stand (docs/model.md, "Growth from light"):
+// after the stand's yearly light solve, every shoot that flushed this year
 //  - turns toward its leaf ball's light vector in the whole stand by the fraction I (heliotropism_strength);
 //  - dies, with its axis and all that axis carries, when its relative light is below its own threshold
 //    D = D0 + dither * U(-1, 1) (death_threshold, death_threshold_dither).

@@ -57,8 +57,8 @@ void RootZone::establish(const Stand& stand) {
   int first_year = stand.stand_age();
   for (const StandTree& tree : trees) {
     if (!tree.alive()) continue;
-    const int planted = stand.stand_age() - tree.tree.age();
-    const glm::dvec3 base = tree.tree.stem_base();
+    const int planted = stand.stand_age() - tree.conifer.age();
+    const glm::dvec3 base = tree.conifer.stem_base();
     roots_[static_cast<std::size_t>(tree.id)].emplace(tree.id, glm::dvec3{base.x, base.y, soil_.surface_z()},
                                                       settings_.parameters_of(tree.species), planted);
     first_year = std::min(first_year, planted);
@@ -97,11 +97,11 @@ void RootZone::couple(Stand& stand) {
       balance_[i] = PathBalance{};
       continue;
     }
-    const PathValues light = light_by_path(tree.tree, tree.leaf_ball_light(), sky_scale_);
+    const PathValues light = light_by_path(tree.conifer, tree.leaf_ball_light(), sky_scale_);
     const PathValues uptake = roots_[i]->available_uptake_by_path(soil_);
     balance_[i] = balance_paths(light, uptake, settings_.coupling);
     roots_[i]->set_branching_bonus(balance_[i]->root);
-    tree.tree.set_branching_bonus(balance_[i]->branch);
+    tree.conifer.set_branching_bonus(balance_[i]->branch);
   }
 }
 

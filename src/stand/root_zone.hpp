@@ -1,6 +1,6 @@
 #pragma once
 // The roots of every tree of the stand in one shared soil, and each tree's crown–root balance (seed 003
-// + MODEL.md §5). The stand manager drives it once a year after the light solve:
+// + docs/roots.md). The stand manager drives it once a year after the light solve:
 //
 //   RootZone zone(settings, plot, seed, sky_scale, backend);   // the run's compute backend, as for light
 //   zone.establish(stand);             // spin-up: roots grown from each tree's planting to the survey age

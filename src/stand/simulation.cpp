@@ -82,8 +82,8 @@ void count_trees(const Stand& stand, const RootZone* roots, SimulationSummary& s
     summary.trees_removed += tree.status == TreeStatus::removed;
     summary.trees_dead += tree.status == TreeStatus::dead;
     if (!tree.alive()) continue;
-    summary.leaf_balls += tree.tree.foliage_shoot_indices().size();
-    summary.shoots += tree.tree.shoots().size();
+    summary.leaf_balls += tree.conifer.foliage_shoot_indices().size();
+    summary.shoots += tree.conifer.shoots().size();
   }
   if (roots)
     for (const roots::RootSystem* system : roots->living_roots()) summary.root_segments += system->segments().size();

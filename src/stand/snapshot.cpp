@@ -6,7 +6,7 @@
 namespace heliostand {
 
 TreeSnapshot snapshot_of(const StandTree& stand_tree) {
-  const ConiferTree& tree = stand_tree.tree;
+  const ConiferTree& tree = stand_tree.conifer;
   TreeSnapshot snapshot;
   snapshot.id = stand_tree.id;
   snapshot.label = stand_tree.label;
@@ -24,11 +24,15 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   snapshot.relative_light = stand_tree.light_budget.relative();
   snapshot.dbh_increment_cm = tree.last_dbh_increment_cm();
   snapshot.status_reason = stand_tree.status_reason;
+  snapshot.gone_at_age = stand_tree.alive() ? -1 : stand_tree.status_changed_at_age;
   snapshot.shoots = tree.shoots();
   snapshot.hollow_count = static_cast<int>(stand_tree.hollows.size());
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
     for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
+    snapshot.leaf_ball_shoot = tree.foliage_shoot_indices();
+  } else {
+    snapshot.crown_when_gone = tree.leaf_balls();  // kept until its one gone year is written (StandYear)
   }
   return snapshot;
 }
@@ -37,7 +41,8 @@ StandInventory take_inventory(const Stand& stand, int year_index) {
   StandInventory inventory{stand.stand_age(), year_index, {}};
   for (const StandTree& tree : stand.trees())
     if (tree.alive())
-      inventory.living.push_back({tree.tree.dbh_cm(), tree.tree.height_m(), tree.tree.stem_volume_m3(), tree.species});
+      inventory.living.push_back(
+          {tree.conifer.dbh_cm(), tree.conifer.height_m(), tree.conifer.stem_volume_m3(), tree.species});
   return inventory;
 }
 

@@ -27,7 +27,7 @@ Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
 void Stand::grow_year() {
   ++stand_age_;
   for (auto& tree : trees_)
-    if (tree.alive()) tree.tree.grow_year();
+    if (tree.alive()) tree.conifer.grow_year();
 }
 
 std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale) {
@@ -38,7 +38,7 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     first_ball[i] = balls.size();
     if (!trees_[i].alive()) continue;
-    const auto own = trees_[i].tree.leaf_balls();
+    const auto own = trees_[i].conifer.leaf_balls();
     balls.insert(balls.end(), own.begin(), own.end());
   }
   first_ball[trees_.size()] = balls.size();
@@ -50,21 +50,21 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
     StandTree& tree = trees_[i];
     if (!tree.alive()) continue;
     const std::span<const LightSample> open(open_grown.data() + first_ball[i], first_ball[i + 1] - first_ball[i]);
-    const std::vector<int> foliage = tree.tree.foliage_shoot_indices();
+    const std::vector<int> foliage = tree.conifer.foliage_shoot_indices();
     std::vector<ConiferTree::FoliageLight> light(foliage.size());
     LightBudget budget;
     for (std::size_t k = 0; k < foliage.size(); ++k) {
       const LightSample& in_stand = samples[first_ball[i] + k];
       const double received = sky_scale * in_stand.light;
       light[k] = {in_stand.light, relative_light(in_stand.light, open[k].light, sky_scale), in_stand.vector};
-      const Shoot& shoot = tree.tree.shoots()[foliage[k]];
+      const Shoot& shoot = tree.conifer.shoots()[foliage[k]];
       const double foliage_amount = glm::length(shoot.tip - shoot.base);
       budget.absorbed += foliage_amount * received;
       budget.absorbed_open += foliage_amount * open[k].light;
     }
-    tree.tree.set_foliage_light(light);
+    tree.conifer.set_foliage_light(light);
     tree.light_budget = budget;
-    tree.tree.set_light_budget(budget.absorbed, budget.absorbed_open);
+    tree.conifer.set_light_budget(budget.absorbed, budget.absorbed_open);
   }
   return balls.size();
 }
@@ -74,8 +74,8 @@ TreeEvent Stand::end_of(StandTree& tree, TreeEventKind kind, std::string_view ca
   tree.status_changed_at_age = stand_age_;
   tree.status_reason = reason;
   return {.stand_age = stand_age_, .tree_id = tree.id, .label = tree.label, .species = tree.species, .kind = kind,
-          .cause = std::string(cause), .reason = reason, .dbh_cm = tree.tree.dbh_cm(),
-          .height_m = tree.tree.height_m(), .volume_m3 = tree.tree.stem_volume_m3()};
+          .cause = std::string(cause), .reason = reason, .dbh_cm = tree.conifer.dbh_cm(),
+          .height_m = tree.conifer.height_m(), .volume_m3 = tree.conifer.stem_volume_m3()};
 }
 
 TreeEvent Stand::remove(StandTree& tree, const std::string& reason) {
@@ -91,7 +91,7 @@ std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
   std::vector<TreeEvent> deaths;
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
-    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.tree, seed);
+    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.conifer, seed);
     if (outcome.tree_died)
       deaths.push_back(kill(tree, DeathCause::light));
   }
@@ -103,7 +103,7 @@ std::vector<TreeEvent> Stand::apply_mortality(std::uint64_t seed) {
   std::vector<TreeEvent> deaths;
   for (StandTree& tree : trees_) {
     if (!tree.alive()) continue;
-    if (const auto cause = draw_mortality(tree.tree, seed))
+    if (const auto cause = draw_mortality(tree.conifer, seed))
       deaths.push_back(kill(tree, *cause));
   }
   const auto crowded = die_of_crowding();
@@ -119,7 +119,7 @@ std::vector<TreeEvent> Stand::die_of_crowding() {
   std::vector<CrowdingCandidate> candidates;
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     if (!trees_[i].alive()) continue;
-    const ConiferTree& tree = trees_[i].tree;
+    const ConiferTree& tree = trees_[i].conifer;
     const SpeciesParameters& species = tree.species();
     living.push_back(i);
     candidates.push_back({tree.dbh_cm(), species.max_stand_density_index * species.self_thinning_limit,
@@ -149,8 +149,8 @@ std::vector<TreeEvent> Stand::thin() {
 std::size_t Stand::release_gone_crowns(const std::function<bool(const StandTree&)>& written_for_the_last_time) {
   std::size_t released = 0;
   for (StandTree& tree : trees_) {
-    if (tree.alive() || tree.tree.crown_released() || !written_for_the_last_time(tree)) continue;
-    tree.tree.release_crown();
+    if (tree.alive() || tree.conifer.crown_released() || !written_for_the_last_time(tree)) continue;
+    tree.conifer.release_crown();
     ++released;
   }
   return released;
@@ -159,7 +159,7 @@ std::size_t Stand::release_gone_crowns(const std::function<bool(const StandTree&
 StandMeasures Stand::measures() const {
   std::vector<TreeMeasurement> living;
   for (const auto& tree : trees_)
-    if (tree.alive()) living.push_back({tree.tree.dbh_cm(), tree.tree.height_m(), 0.0});
+    if (tree.alive()) living.push_back({tree.conifer.dbh_cm(), tree.conifer.height_m(), 0.0});
   const StandMetrics metrics = measure_stand(living, plot_area_ha_);
   return {metrics.basal_area_m2_per_ha, metrics.top_height_m};
 }
@@ -171,8 +171,8 @@ std::vector<double> Stand::hegyi_indices() const {
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     if (!trees_[i].alive()) continue;
     living.push_back(i);
-    positions.emplace_back(trees_[i].tree.stem_base());
-    dbh.push_back(trees_[i].tree.dbh_cm());
+    positions.emplace_back(trees_[i].conifer.stem_base());
+    dbh.push_back(trees_[i].conifer.dbh_cm());
   }
   const Neighbourhood stems(positions, competition_.edges);
   const std::vector<double> of_living = heliostand::hegyi_indices(stems, dbh, competition_.radius_m);
@@ -185,7 +185,7 @@ std::vector<double> Stand::hegyi_indices() const {
 // one row thinning to the next. The scenario check found rows in the survey's positions, which are these.
 std::vector<int> Stand::planting_rows(const RowSettings& settings) const {
   std::vector<glm::dvec2> positions;
-  for (const auto& tree : trees_) positions.emplace_back(tree.tree.stem_base());
+  for (const auto& tree : trees_) positions.emplace_back(tree.conifer.stem_base());
   const PlantingRowsFound found = find_planting_rows(positions, settings.azimuth_deg, settings.tolerance_m);
   if (found.rows) return found.rows->row_of;
   spdlog::warn("age {}: no planting rows: {}", stand_age_, found.problem);
@@ -197,9 +197,9 @@ std::vector<ThinningCandidate> Stand::candidates_for(const ScheduledThinning& ev
   std::vector<ThinningCandidate> candidates;
   for (std::size_t i : living) {
     const StandTree& tree = trees_[i];
-    const glm::dvec3 base = tree.tree.stem_base();
-    candidates.push_back({tree.label, tree.tree.dbh_cm(), event.protect_habitat_trees && tree.is_habitat_tree(),
-                          tree.tree.height_m(), base.x, base.y});
+    const glm::dvec3 base = tree.conifer.stem_base();
+    candidates.push_back({tree.label, tree.conifer.dbh_cm(), event.protect_habitat_trees && tree.is_habitat_tree(),
+                          tree.conifer.height_m(), base.x, base.y});
   }
   // Only the regimes that read them pay for the neighbourhood and the rows.
   if (event.rule.method == ThinningMethod::crop_tree) {

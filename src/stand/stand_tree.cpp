@@ -4,12 +4,12 @@ namespace heliostand {
 
 std::vector<LightSample> StandTree::leaf_ball_light() const {
   std::vector<LightSample> samples;
-  for (const auto& foliage : tree.foliage_light()) samples.push_back({foliage.light, foliage.vector});
+  for (const auto& foliage : conifer.foliage_light()) samples.push_back({foliage.light, foliage.vector});
   return samples;
 }
 
 double StandTree::mean_light() const {
-  const auto light = tree.foliage_light();
+  const auto light = conifer.foliage_light();
   if (light.empty()) return 1.0;
   double sum = 0;
   for (const auto& sample : light) sum += sample.light;

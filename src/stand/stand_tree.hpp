@@ -26,7 +26,7 @@ struct StandTree {
   int id = 0;                 // 0-based index in the stand, stable for the whole run
   std::string label;          // the survey record's id
   std::string species;
-  ConiferTree tree;
+  ConiferTree conifer;        // the growing tree: stem and crown, shoot by shoot (its roots are in the root zone)
   TreeStatus status = TreeStatus::alive;
   int status_changed_at_age = -1;  // stand age of death or removal
   std::string status_reason;       // e.g. "thinning from below", "light", "suppression"

@@ -7,7 +7,7 @@
 namespace heliostand {
 
 std::shared_ptr<const hollow::HollowMesh> trunk_mesh_of(const StandTree& stand_tree) {
-  const ConiferTree& tree = stand_tree.tree;
+  const ConiferTree& tree = stand_tree.conifer;
   if (tree.height_m() <= 0.0) return nullptr;
   const hollow::TrunkSurface trunk = hollow::conifer_trunk(tree.species(), tree.height_m(), tree.crown_base_m(), tree.stem_scale());
   auto plain_stem = [&] {

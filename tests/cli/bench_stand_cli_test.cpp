@@ -1,5 +1,6 @@
 // `heliostand bench stand` (issue 16 item 1) as a user runs it, on the tiny stand for one year: the JSON's fields
-// and counts. Timings are only checked to be there, never against a bound (DESIGN.md: no timed unit tests).
+// and counts. Timings are only checked to be there, never against a bound (speed is measured by benchmarks, never
+// by timed unit tests).
 #include <gtest/gtest.h>
 
 #include <vtkCompositeDataSet.h>

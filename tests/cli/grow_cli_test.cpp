@@ -179,7 +179,9 @@ void check_opencl_agrees(const fs::path& folder) {
   const auto opencl_rows = read_table(opencl / "trees.csv");
   ASSERT_EQ(reference_rows.size(), opencl_rows.size());
   for (std::size_t i = 0; i < reference_rows.size(); ++i) {
-    // Growth does not yet respond to light, so everything but the light itself must be identical.
+    // Growth follows light, so these columns agree only as far as trees.csv prints them: in the tiny stand's five
+    // years the float OpenCL light (within 2e-4 of the double reference, checked below) moves no printed digit.
+    // A real disagreement of the two solvers would; should rounding alone ever flip a digit, compare with tolerances.
     for (const char* column : {"label", "status", "height_m", "dbh_cm", "crown_radius_m", "leaf_balls"})
       EXPECT_EQ(reference_rows[i].at(column), opencl_rows[i].at(column)) << "row " << i << " " << column;
     EXPECT_NEAR(std::stod(reference_rows[i].at("mean_light")), std::stod(opencl_rows[i].at("mean_light")), 2e-4)

@@ -49,16 +49,6 @@ TEST(CrownRootBalance, BalanceAppliesRhoAndTauPerPath) {
   EXPECT_DOUBLE_EQ(b.branch[0], 0.0);           // empty path
 }
 
-TEST(CrownRootBalance, PathsAreFortyFiveDegreeSectorsCounterClockwiseFromEast) {
-  EXPECT_EQ(path_of_azimuth(0.0), 0);
-  EXPECT_EQ(path_of_azimuth(radians(44.9)), 0);
-  EXPECT_EQ(path_of_azimuth(radians(45.1)), 1);
-  EXPECT_EQ(path_of_azimuth(radians(100.0)), 2);
-  EXPECT_EQ(path_of_azimuth(radians(-10.0)), 7);   // just south of east
-  EXPECT_EQ(path_of_azimuth(radians(360.0)), 0);
-  EXPECT_EQ(path_of_azimuth(radians(181.0)), 4);
-}
-
 ConiferTree grown_tree(int age) {
   ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, {3.0, 4.0, 0.0}, 11, 0);
   tree.grow_to_age(age);
@@ -79,7 +69,7 @@ TEST(CrownRootBalance, EveryFirstOrderShootPointsIntoItsPath) {
     if (shoot.order != 1) continue;
     // A first-order branch grows in its own vertical plane: its tip's azimuth around the stem is its path's.
     const glm::dvec3 offset = shoot.tip - tree.stem_base();
-    EXPECT_EQ(path_of_azimuth(std::atan2(offset.y, offset.x)), path) << "shoot " << i;
+    EXPECT_EQ(compass_sector_of(offset), path) << "shoot " << i;
     ++checked;
   }
   EXPECT_GT(checked, 20);

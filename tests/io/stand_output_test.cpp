@@ -213,15 +213,23 @@ TEST_F(StandOutputRun, ANonEmptyFolderIsRefusedAndLeftAlone) {
   EXPECT_EQ(std::distance(fs::directory_iterator(root_), fs::directory_iterator()), 1);
 }
 
-// Writes the tiny two-year stand the ParaView render check (tests/scripts/paraview.cmake) opens.
-// Disabled in the ordinary run; CTest calls it explicitly as the fixture of that check.
+// Writes the tiny two-year stand the ParaView render checks (tests/scripts/paraview.cmake) open; its third tree
+// is thinned in the second year (written once more, removed, with the crown it had).
+// Disabled in the ordinary run; CTest calls it explicitly as the fixture of those checks.
 TEST(ParaViewFixture, DISABLED_WriteTinyStand) {
   const fs::path root = fs::path(HELIOSTAND_BINARY_DIR) / "tests" / "paraview" / "tiny_stand";
   fs::create_directories(root.parent_path());
   StandOutput out({root, true, 100.0});
   const auto young = testing::make_synthetic_stand(10, 0);
   out.write_year(young.snapshot);
-  const auto older = testing::make_synthetic_stand(16, 6);
+  auto older = testing::make_synthetic_stand(16, 6);
+  TreeSnapshot& thinned = older.snapshot.trees[2];
+  thinned.status = TreeStatus::removed;
+  thinned.gone_at_age = 16;
+  thinned.status_reason = "first thinning";
+  thinned.crown_when_gone = std::move(thinned.leaf_balls);
+  thinned.leaf_balls.clear();
+  thinned.leaf_ball_light.clear();
   out.write_year(older.snapshot);
   out.finish(example_manifest());
   EXPECT_TRUE(fs::exists(root / "stand.pvd"));

@@ -16,6 +16,7 @@ struct SyntheticTree {
   std::vector<Shoot> shoots;
   std::vector<LeafBall> balls;
   std::vector<double> light;
+  std::vector<int> ball_shoot;  // the index in `shoots` of each ball's shoot
 };
 
 inline constexpr int kBranchesPerWhorl = 4;
@@ -56,6 +57,7 @@ inline SyntheticTree make_synthetic_tree(glm::dvec3 base, int height) {
       if (branch.alive) {
         tree.balls.push_back({branch.tip, 0.25});
         tree.light.push_back(std::min(1.0, 0.2 + 0.1 * z));
+        tree.ball_shoot.push_back(static_cast<int>(tree.shoots.size()) - 1);
       }
     }
   }
@@ -84,6 +86,7 @@ inline TreeSnapshot snapshot_of(const SyntheticTree& tree, int id, std::string l
   s.shoots = tree.shoots;
   s.leaf_balls = tree.balls;
   s.leaf_ball_light = tree.light;
+  s.leaf_ball_shoot = tree.ball_shoot;
   return s;
 }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
@@ -20,6 +21,7 @@
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkIdList.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkXMLMultiBlockDataReader.h>
@@ -79,7 +81,7 @@ class LevelsOfDetail : public ::testing::Test {
 TEST_F(LevelsOfDetail, EachLevelWritesItsBlocks) {
   const std::map<OutputDetail, std::vector<std::string>> expected = {
       // full also has `trunk`, but the synthetic trees have no stem mesh and VTK leaves an empty block out.
-      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope"}},
+      {OutputDetail::full, {"branches", "leaf_balls", "trees", "crown_envelope", "foliage"}},
       {OutputDetail::envelope, {"trees", "stem", "crown_envelope"}},
       {OutputDetail::cone, {"trees", "crown_cone"}}};
   for (const auto& [detail, names] : expected) {
@@ -115,6 +117,33 @@ TEST_F(LevelsOfDetail, EveryTreeHasAClosedEnvelopeAroundAllItsLeafBalls) {
   vtkDataArray* light = block->GetCellData()->GetArray("light");
   ASSERT_NE(light, nullptr);
   EXPECT_DOUBLE_EQ(light->GetTuple1(0), 0.5);  // the tree's mean_light
+}
+
+// The envelope's corners carry the light of the leaf ball they bound: the top of a crown is its top whorl's light, the
+// bottom its lowest living whorl's (the synthetic trees' light grows with height), not the tree's mean.
+TEST_F(LevelsOfDetail, AnEnvelopeCornerHasTheLightOfTheBallItBounds) {
+  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  vtkDataArray* light = block->GetPointData()->GetArray("light");
+  ASSERT_NE(light, nullptr);
+  ASSERT_EQ(light->GetNumberOfTuples(), block->GetNumberOfPoints());
+  vtkDataArray* ids = block->GetCellData()->GetArray("tree_id");
+  for (const TreeSnapshot& tree : stand_.snapshot.trees) {
+    double lowest = 1e9, highest = -1e9, light_low = -1, light_high = -1;
+    for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c) {
+      if (static_cast<int>(ids->GetTuple1(c)) != tree.id) continue;
+      vtkIdList* corners = block->GetCell(c)->GetPointIds();
+      for (vtkIdType k = 0; k < corners->GetNumberOfIds(); ++k) {
+        const vtkIdType p = corners->GetId(k);
+        const double z = block->GetPoint(p)[2];
+        if (z < lowest) lowest = z, light_low = light->GetTuple1(p);
+        if (z > highest) highest = z, light_high = light->GetTuple1(p);
+      }
+    }
+    const auto [low, high] = std::minmax_element(tree.leaf_ball_light.begin(), tree.leaf_ball_light.end());
+    EXPECT_DOUBLE_EQ(light_high, *high) << "tree " << tree.id;
+    EXPECT_DOUBLE_EQ(light_low, *low) << "tree " << tree.id;
+    EXPECT_LT(*low, *high) << "tree " << tree.id << ": the synthetic light varies with height";
+  }
 }
 
 TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {

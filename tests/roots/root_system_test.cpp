@@ -155,13 +155,6 @@ TEST(RootSystem, SameSeedSameRootsWhateverTheOrderOfTrees) {
               glm::length(other.segments().back().end - same.segments().back().end) > 1e-6);
 }
 
-TEST(RootSystem, PathSectorsCountCounterClockwiseFromEast) {
-  EXPECT_EQ(RootSystem::sector_of_direction({1.0, 0.1, -0.3}), 0);
-  EXPECT_EQ(RootSystem::sector_of_direction({0.0, 1.0, 0.0}), 2);
-  EXPECT_EQ(RootSystem::sector_of_direction({-1.0, -0.01, 0.0}), 4);
-  EXPECT_EQ(RootSystem::sector_of_direction({1.0, -0.01, 0.0}), 7);
-}
-
 TEST(RootSystem, EveryRootInheritsThePathWhereItsRouteJoinsTheMainRoot) {
   const RootSystem tree = grown_tree(8);
   const auto segments = tree.segments();
@@ -172,7 +165,7 @@ TEST(RootSystem, EveryRootInheritsThePathWhereItsRouteJoinsTheMainRoot) {
     }
     const RootSegment* joining = &segment;  // walk back to the first segment off the main root
     while (segments[joining->parent].type != RootType::main) joining = &segments[joining->parent];
-    EXPECT_EQ(segment.sector, RootSystem::sector_of_direction(joining->end - joining->start));
+    EXPECT_EQ(segment.sector, compass_sector_of(joining->end - joining->start));
   }
 }
 

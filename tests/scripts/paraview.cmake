@@ -1,6 +1,6 @@
-# ParaView render check: the output tests write a tiny two-year stand, pvbatch renders its first and
+# ParaView render checks: the output tests write a tiny two-year stand, pvbatch renders its first and
 # last time step (tubes by absolute radius, leaf-ball spheres coloured by light) and check_png.py
-# checks the images show something. Reported as skipped (exit 77) where ParaView, xvfb or apt are missing.
+# checks the images show something; the one-step view is checked on it too. Reported as skipped (exit 77) where ParaView, xvfb or apt are missing.
 # The X server the render tests share: cmake/PvbatchRenderTests.cmake.
 include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_test(NAME io.paraview.write_tiny_stand
@@ -15,6 +15,20 @@ set_tests_properties(io.paraview.render_tiny_stand PROPERTIES
   FIXTURES_REQUIRED heliostand_tiny_stand_series
   TIMEOUT 600)
 heliostand_render_test(io.paraview.render_tiny_stand)
+
+# The one-step view (validation/paraview/heliostand_view.py, the macro users load in ParaView) in pvbatch on the same
+# stand's last year: check_view.py checks that it draws every block and every tree trees.csv lists that year, and
+# run_pvbatch.sh that the picture is not blank.
+add_test(NAME io.paraview.view_tiny_stand
+         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
+                 ${PROJECT_SOURCE_DIR}/validation/paraview/check_view.py ${PROJECT_BINARY_DIR}/tests/paraview/view
+                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/stand.pvd
+                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/trees.csv
+                 ${PROJECT_BINARY_DIR}/tests/paraview/view/tiny_stand_view.png)
+set_tests_properties(io.paraview.view_tiny_stand PROPERTIES
+  FIXTURES_REQUIRED heliostand_tiny_stand_series
+  TIMEOUT 600)
+heliostand_render_test(io.paraview.view_tiny_stand)
 
 # The README's first command grows the example stand into out/sobetsu and renders its first and last year
 # into out/sobetsu/pictures (render.sh checks them as it writes them). This test checks those pictures again,

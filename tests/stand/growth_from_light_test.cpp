@@ -31,7 +31,7 @@ TEST(Establishment, EveryTreeStartsAsSurveyed) {
   ASSERT_EQ(trees.size(), scenario.survey.trees.size());
   for (std::size_t i = 0; i < trees.size(); ++i) {
     const SurveyRecord& record = scenario.survey.trees[i];
-    const ConiferTree& tree = trees[i].tree;
+    const ConiferTree& tree = trees[i].conifer;
     EXPECT_NEAR(tree.height_m(), record.height_m, 0.02 * record.height_m) << record.id;
     EXPECT_NEAR(tree.dbh_cm(), record.dbh_cm, 0.02 * record.dbh_cm) << record.id;
     EXPECT_NEAR(tree.crown_radius_m(), record.crown_radius_m, 0.02 * record.crown_radius_m) << record.id;
@@ -104,18 +104,19 @@ Block grow_block(bool released) {
   StageClock clock;
   StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 6, 1}, clock);
   std::vector<double> start;
-  for (const StandTree& tree : stand.trees()) start.push_back(tree.tree.dbh_cm());
+  for (const StandTree& tree : stand.trees()) start.push_back(tree.conifer.dbh_cm());
   for (int year = 0; year <= 6; ++year) simulated_year.run(year);
   Block block;
   for (int id : {5, 6, 9, 10}) {
     const StandTree& tree = stand.trees()[id];
     EXPECT_TRUE(tree.alive()) << id;
-    block.dbh_increment_cm += (tree.tree.dbh_cm() - start[id]) / 4;
-    block.crown_radius_m += tree.tree.crown_radius_m() / 4;
+    block.dbh_increment_cm += (tree.conifer.dbh_cm() - start[id]) / 4;
+    block.crown_radius_m += tree.conifer.crown_radius_m() / 4;
     block.relative_light += tree.light_budget.relative() / 4;
   }
   for (const StandTree& tree : stand.trees())
-    if (tree.alive()) block.height_over_site_curve.push_back(tree.tree.height_m() / tree.tree.height_at(tree.tree.age()));
+    if (tree.alive())
+      block.height_over_site_curve.push_back(tree.conifer.height_m() / tree.conifer.height_at(tree.conifer.age()));
   return block;
 }
 
@@ -153,7 +154,7 @@ TEST(GrowthFromLight, ATreeAloneHasRelativeLightOne) {
   // A dimmer stand sky lowers the relative light of every ball: sky_scale reaches growth and shoot death.
   stand.illuminate(solver, solver, 0.5);
   EXPECT_NEAR(stand.trees()[0].light_budget.relative(), 0.5, 1e-9);
-  for (const auto& light : stand.trees()[0].tree.foliage_light()) EXPECT_LE(light.relative_light, 0.5 + 1e-12);
+  for (const auto& light : stand.trees()[0].conifer.foliage_light()) EXPECT_LE(light.relative_light, 0.5 + 1e-12);
 }
 
 TEST(Mortality, SuppressionRisesAsRadialGrowthFalls) {

@@ -51,7 +51,7 @@ std::vector<std::string> removed_labels(const std::vector<TreeEvent>& events) {
 
 TEST(HabitatTrees, ThinningFromBelowKeepsTheHabitatTreeUnlessProtectionIsOff) {
   Stand protected_stand = four_trees_with_a_habitat_tree(true);
-  ASSERT_LT(protected_stand.trees()[3].tree.dbh_cm(), protected_stand.trees()[2].tree.dbh_cm());
+  ASSERT_LT(protected_stand.trees()[3].conifer.dbh_cm(), protected_stand.trees()[2].conifer.dbh_cm());
   EXPECT_EQ(removed_labels(protected_stand.thin()), std::vector<std::string>{"2"});  // the next-smallest
   EXPECT_TRUE(protected_stand.trees()[3].alive());
 
@@ -71,7 +71,7 @@ TEST(HabitatTrees, TrunkMeshCarriesTheHollowAndThePlainStemDoesNot) {
   EXPECT_GT(count_part(*habitat, hollow::MeshPart::callus), 100);
   EXPECT_GT(count_part(*habitat, hollow::MeshPart::bark), 100);
   // The plain stem reaches the tree top and is as thick at breast height as the tree's DBH says.
-  const ConiferTree& tree = stand.trees()[0].tree;
+  const ConiferTree& tree = stand.trees()[0].conifer;
   double top = 0, widest_at_breast_height = 0;
   for (const auto& v : plain->vertices) {
     top = std::max(top, v.z);

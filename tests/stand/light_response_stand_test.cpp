@@ -1,6 +1,6 @@
-// Seed 000's light response at stand scale (MODEL.md §5): a thinning gap is filled by the neighbours' crowns
-// (Fig. 11 at stand scale), and a suppressed tree in a dense group dies of light while the same tree grown in the
-// open keeps its crown. Small young stands and a coarse sky keep the reference solver fast.
+// Seed 000's light response at stand scale (docs/model.md, "Growth from light"): a thinning gap is filled by the
+// neighbours' crowns (Fig. 11 at stand scale), and a suppressed tree in a dense group dies of light while the same
+// tree grown in the open keeps its crown. Small young stands and a coarse sky keep the reference solver fast.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,8 +60,8 @@ TEST(LightResponseStand, NeighboursCrownExtendsIntoAThinningGap) {
   Stand control = row(false), thinned = row(true);
   grow_with_light(control, 4);
   grow_with_light(thinned, 4);
-  const double with_neighbour = reach_toward_plus_x(control.trees()[0].tree);
-  const double into_gap = reach_toward_plus_x(thinned.trees()[0].tree);
+  const double with_neighbour = reach_toward_plus_x(control.trees()[0].conifer);
+  const double into_gap = reach_toward_plus_x(thinned.trees()[0].conifer);
   std::cerr << "reach toward the gap: " << into_gap << " m (thinned) vs " << with_neighbour << " m (control)\n";
   EXPECT_GT(into_gap, with_neighbour + 0.05);
 }
@@ -71,7 +71,7 @@ TEST(LightResponseStand, SuppressedTreeInADenseGroupFallsBehindButNotInTheOpen) 
   // in their shade its leader and stem grow less than the same tree alone; alone it keeps its crown.
   auto centre_tree = [] {
     StandTree tree = planted(4, {0.0, 0.0, 0.0}, 12.0, 10);
-    tree.tree.set_light_driven_crown(true);
+    tree.conifer.set_light_driven_crown(true);
     return tree;
   };
   std::vector<StandTree> group;
@@ -79,18 +79,18 @@ TEST(LightResponseStand, SuppressedTreeInADenseGroupFallsBehindButNotInTheOpen) 
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j, ++id) {
       group.push_back(i == 0 && j == 0 ? centre_tree() : planted(id, {1.2 * i, 1.2 * j, 0.0}, 32.0, 10));
-      group.back().tree.set_light_driven_crown(true);
+      group.back().conifer.set_light_driven_crown(true);
     }
   Stand dense(0.01, 10, std::move(group), {});
   std::vector<StandTree> alone;
   alone.push_back(centre_tree());
   Stand open(0.01, 10, std::move(alone), {});
 
-  const double start_height = dense.trees()[4].tree.height_m(), start_dbh = dense.trees()[4].tree.dbh_cm();
+  const double start_height = dense.trees()[4].conifer.height_m(), start_dbh = dense.trees()[4].conifer.dbh_cm();
   grow_with_light(dense, 2);
   EXPECT_TRUE(grow_with_light(open, 2).empty());
-  const ConiferTree& shaded = dense.trees()[4].tree;
-  const ConiferTree& lone = open.trees()[0].tree;
+  const ConiferTree& shaded = dense.trees()[4].conifer;
+  const ConiferTree& lone = open.trees()[0].conifer;
   std::cerr << "after 2 years: height growth " << shaded.height_m() - start_height << " m shaded vs "
             << lone.height_m() - start_height << " m alone; DBH growth " << shaded.dbh_cm() - start_dbh << " vs "
             << lone.dbh_cm() - start_dbh << " cm\n";
@@ -99,7 +99,7 @@ TEST(LightResponseStand, SuppressedTreeInADenseGroupFallsBehindButNotInTheOpen) 
 
   EXPECT_TRUE(grow_with_light(open, 10).empty());
   EXPECT_TRUE(open.trees()[0].alive());
-  EXPECT_TRUE(open.trees()[0].tree.has_living_branch_foliage());
+  EXPECT_TRUE(open.trees()[0].conifer.has_living_branch_foliage());
 }
 
 // The same suppressed centre tree dies within 12 years: its stem nearly stops thickening, and suppression mortality
@@ -110,7 +110,7 @@ TEST(LightResponseStand, SuppressedTreeInADenseGroupDiesWithinTwelveYears) {
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j, ++id) {
       group.push_back(planted(id, {1.2 * i, 1.2 * j, 0.0}, i == 0 && j == 0 ? 12.0 : 32.0, 10));
-      group.back().tree.set_light_driven_crown(true);
+      group.back().conifer.set_light_driven_crown(true);
     }
   Stand dense(0.01, 10, std::move(group), {});
   const auto deaths = grow_with_light(dense, 12);

@@ -43,7 +43,7 @@ TEST(RootZone, SpinUpGrowsEachTreeFromItsPlanting) {
     const roots::RootSystem* roots = zone.roots_of(id);
     ASSERT_NE(roots, nullptr);
     EXPECT_EQ(roots->year(), 6);
-    const glm::dvec3 collar = stand.trees()[id].tree.stem_base();
+    const glm::dvec3 collar = stand.trees()[id].conifer.stem_base();
     EXPECT_DOUBLE_EQ(roots->segments()[0].start.x, collar.x);
     EXPECT_DOUBLE_EQ(roots->segments()[0].start.y, collar.y);
   }
@@ -64,19 +64,19 @@ TEST(RootZone, CoupleHandsBranchToTheCrownAndRootToTheRoots) {
   zone.establish(stand);
   for (std::size_t i = 0; i < 2; ++i) {
     // Full light on every leaf ball.
-    ConiferTree& tree = stand.tree_at(i).tree;
+    ConiferTree& tree = stand.tree_at(i).conifer;
     tree.set_foliage_light(std::vector<ConiferTree::FoliageLight>(tree.leaf_balls().size()));
   }
   zone.couple(stand);
   for (int id : {0, 1}) {
     const PathBalance* balance = zone.balance_of(id);
     ASSERT_NE(balance, nullptr);
-    EXPECT_EQ(stand.trees()[id].tree.branching_bonus(), balance->branch);
+    EXPECT_EQ(stand.trees()[id].conifer.branching_bonus(), balance->branch);
     EXPECT_EQ(zone.roots_of(id)->branching_bonus(), balance->root);
     double light = 0.0;
     for (double lp : balance->lp) light += lp;
     // ρ Σ L_i with L_i = 1: LP summed over the paths is ρ × the number of leaf balls.
-    EXPECT_NEAR(light, RootsSettings{}.coupling.rho * stand.trees()[id].tree.leaf_balls().size(), 1e-9);
+    EXPECT_NEAR(light, RootsSettings{}.coupling.rho * stand.trees()[id].conifer.leaf_balls().size(), 1e-9);
   }
 }
 

@@ -97,7 +97,7 @@ TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
   StandOutput output({tmp.path() / "run", false, 100.0, false});
   StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
   for (int year = 0; year <= 2; ++year) simulated_year.run(year);
-  const ConiferTree& larch = stand.trees()[1].tree;
+  const ConiferTree& larch = stand.trees()[1].conifer;
   ASSERT_FALSE(stand.trees()[1].alive()) << "thinned at 22";
   ASSERT_FALSE(larch.crown_released()) << "age 23 writes it";
   const double crown_base = larch.crown_base_m(), crown_radius = larch.crown_radius_m();
@@ -107,7 +107,7 @@ TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
   simulated_year.run(3);
   EXPECT_TRUE(larch.crown_released());
   EXPECT_TRUE(larch.shoots().empty());
-  EXPECT_FALSE(stand.trees()[0].tree.crown_released()) << "living trees keep theirs";
+  EXPECT_FALSE(stand.trees()[0].conifer.crown_released()) << "living trees keep theirs";
   simulated_year.run(4);
   output.finish(RunManifest{});
 
@@ -127,10 +127,10 @@ TEST(StandYearOutput, WithoutOutputsAGoneTreeGivesBackItsCrownAtOnce) {
   StageClock clock;
   StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 3}, clock);
   for (int year = 0; year <= 1; ++year) simulated_year.run(year);
-  EXPECT_FALSE(stand.trees()[1].tree.crown_released());
+  EXPECT_FALSE(stand.trees()[1].conifer.crown_released());
   simulated_year.run(2);
-  EXPECT_TRUE(stand.trees()[1].tree.crown_released());
-  EXPECT_FALSE(stand.trees()[0].tree.crown_released());
+  EXPECT_TRUE(stand.trees()[1].conifer.crown_released());
+  EXPECT_FALSE(stand.trees()[0].conifer.crown_released());
 }
 
 }  // namespace

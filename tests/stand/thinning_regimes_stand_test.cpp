@@ -92,7 +92,7 @@ std::vector<std::string> by_dbh(const std::vector<StandTree>& trees) {
   std::vector<const StandTree*> order;
   for (const auto& tree : trees) order.push_back(&tree);
   std::stable_sort(order.begin(), order.end(),
-                   [](auto* a, auto* b) { return a->tree.dbh_cm() < b->tree.dbh_cm(); });
+                   [](auto* a, auto* b) { return a->conifer.dbh_cm() < b->conifer.dbh_cm(); });
   std::vector<std::string> out;
   for (auto* tree : order) out.push_back(tree->label);
   return out;
@@ -101,7 +101,7 @@ std::vector<std::string> by_dbh(const std::vector<StandTree>& trees) {
 TEST(ThinningRegimesInAStand, EveryTreeHasItsOwnDbh) {
   const auto trees = six_rows();
   std::set<double> dbh;
-  for (const auto& tree : trees) dbh.insert(tree.tree.dbh_cm());
+  for (const auto& tree : trees) dbh.insert(tree.conifer.dbh_cm());
   EXPECT_EQ(dbh.size(), trees.size());  // the rankings below have no ties to break
 }
 
@@ -133,7 +133,7 @@ TEST(ThinningRegimesInAStand, DbhClassTakesTheClass) {
   const auto ranking = by_dbh(trees);
   // The class from the 5th to the 12th smallest DBH (half-open at the 13th).
   auto dbh_of = [&](const std::string& label) {
-    return std::find_if(trees.begin(), trees.end(), [&](auto& t) { return t.label == label; })->tree.dbh_cm();
+    return std::find_if(trees.begin(), trees.end(), [&](auto& t) { return t.label == label; })->conifer.dbh_cm();
   };
   auto in_class = rule_of(ThinningMethod::dbh_class);
   in_class.dbh_class = {dbh_of(ranking[4]), dbh_of(ranking[12])};
@@ -161,15 +161,15 @@ TEST(ThinningRegimesInAStand, CropTreeThinningReleasesTheCropTrees) {
   Stand stand(plot_area_ha, 20, six_rows(), {at_age(20, release)});
   std::vector<ThinningCandidate> candidates;
   for (const auto& tree : stand.trees())
-    candidates.push_back({tree.label, tree.tree.dbh_cm(), false, tree.tree.height_m(), tree.tree.stem_base().x,
-                          tree.tree.stem_base().y});
+    candidates.push_back({tree.label, tree.conifer.dbh_cm(), false, tree.conifer.height_m(), tree.conifer.stem_base().x,
+                          tree.conifer.stem_base().y});
   const auto crop_trees = select_crop_trees(release.crop_trees, candidates, ThinningPlot{plot_area_ha, {}});
   ASSERT_EQ(crop_trees.size(), 2u);
   std::set<std::string> expected;
   for (std::size_t crop_tree : crop_trees)
     for (const auto& tree : stand.trees())
       if (tree.id != static_cast<int>(crop_tree) &&
-          glm::length(tree.tree.stem_base() - stand.trees()[crop_tree].tree.stem_base()) < 2.0)
+          glm::length(tree.conifer.stem_base() - stand.trees()[crop_tree].conifer.stem_base()) < 2.0)
         expected.insert(tree.label);
   ASSERT_FALSE(expected.empty());
 

@@ -74,7 +74,7 @@ CoupledResult run_coupled(const CoupledExperiment& e) {
   }
   if (ratios > 0) result.mean_lp_over_wp /= ratios;
 
-  const ConiferTree& tree = stand.trees()[0].tree;
+  const ConiferTree& tree = stand.trees()[0].conifer;
   result.root_length_m = zone.roots_of(0)->total_length_m();
   result.shoots = static_cast<double>(tree.living_shoot_count());
   for (int shoot : tree.foliage_shoot_indices()) {

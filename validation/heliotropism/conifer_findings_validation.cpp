@@ -67,7 +67,7 @@ double lean_toward_the_open(std::uint64_t seed, double heliotropism) {
   StageClock clock;
   StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 1}, clock);
   for (int year = 0; year <= 4; ++year) simulated_year.run(year);
-  const ConiferTree& tree = stand.trees()[0].tree;
+  const ConiferTree& tree = stand.trees()[0].conifer;
   double sum = 0.0;
   const auto balls = tree.leaf_balls();
   for (const LeafBall& ball : balls) sum += ball.centre.x - tree.stem_base().x;

@@ -51,12 +51,12 @@ StandRecord record_of(const Stand& stand) {
   StandRecord record;
   for (const StandTree& tree : stand.trees()) {
     TreeRecord& r = record[tree.label];
-    r.stem = tree.tree.stem_base();
+    r.stem = tree.conifer.stem_base();
     if (tree.alive())
-      for (const LeafBall& ball : tree.tree.leaf_balls()) r.foliage.push_back(ball.centre);
+      for (const LeafBall& ball : tree.conifer.leaf_balls()) r.foliage.push_back(ball.centre);
     r.status = tree.status;
     r.status_age = tree.status_changed_at_age;
-    r.height_m = tree.tree.height_m();
+    r.height_m = tree.conifer.height_m();
   }
   return record;
 }
