@@ -15,7 +15,7 @@
 #include "batch/run_process.hpp"
 #include "batch/worker_pool.hpp"
 #include "io/checkpoint_file.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 
 namespace heliostand {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <set>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "scenario/toml_table_reader.hpp"
 
 namespace heliostand {

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand {
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "cli/commands.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 
 namespace heliostand::cli {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "hollow/hollow_mesh.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand::hollow {
 

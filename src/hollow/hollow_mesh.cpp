@@ -11,7 +11,7 @@
 #include "hollow/stem_chart.hpp"
 #include "hollow/stem_mesh_builder.hpp"
 #include "hollow/wound_outline.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand::hollow {
 

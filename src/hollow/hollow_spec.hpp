@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand::hollow {
 

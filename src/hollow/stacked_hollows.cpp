@@ -14,7 +14,7 @@
 #include "geometry/angles.hpp"
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/stem_mesh_builder.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand::hollow {
 

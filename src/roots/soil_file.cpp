@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand::roots {
 

@@ -6,7 +6,7 @@
 
 #include <toml++/toml.h>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand {
 

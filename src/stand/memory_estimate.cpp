@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "scenario/scenario.hpp"
 
 namespace heliostand {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "architecture/species.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "survey/survey.hpp"
 
 namespace heliostand {

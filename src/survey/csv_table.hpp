@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace heliostand {
 

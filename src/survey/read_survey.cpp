@@ -11,7 +11,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "survey/cell_text.hpp"
 #include "survey/check_hollows.hpp"
 #include "survey/csv_table.hpp"

@@ -7,7 +7,7 @@
 #include "batch/batch_manifest.hpp"
 #include "batch/batch_root.hpp"
 #include "batch/batch_run.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 #include "io/temp_folder.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_input_file.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "roots/soil_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_input_file.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "survey/read_survey.hpp"
 

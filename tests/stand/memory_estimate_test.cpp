@@ -1,7 +1,7 @@
 // The up-front memory estimate (stand/memory_estimate.hpp): its formula, and a refusal that names the figures.
 #include <gtest/gtest.h>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/memory_estimate.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "survey/read_survey.hpp"
 #include "survey/survey_test_files.hpp"
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "survey/read_survey.hpp"
 
 namespace heliostand::testing {

@@ -1,4 +1,4 @@
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 #include <fmt/format.h>
 
