@@ -28,7 +28,7 @@
 #include "architecture/kanamaru_growth.hpp"
 #include "architecture/kanamaru_scenario.hpp"
 #include "crown_shape.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 using namespace heliostand;
 
