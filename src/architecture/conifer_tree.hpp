@@ -12,7 +12,7 @@
 #include "architecture/branch_axis.hpp"
 #include "architecture/shoot.hpp"
 #include "architecture/species.hpp"
-#include "io/checkpoint_access.hpp"
+#include "core/checkpoint_access.hpp"
 
 namespace heliostand {
 

@@ -4,10 +4,12 @@
 // their death threshold (recursively toward the root) and turns the survivors toward their light vector.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "architecture/death_threshold.hpp"
 #include "architecture/dichotomy_tree.hpp"
+#include "light/kanamaru_light_solver.hpp"
 #include "light/light_parameters.hpp"
 #include "light/light_solver.hpp"
 
@@ -33,7 +35,7 @@ struct KanamaruParameters {
   // ball's shadow onto the receiver's celestial sphere (Fig. 3); a ball around the viewpoint has no
   // projection, so by default it casts none (docs/model.md explains why this matters: with R = 2 every tip
   // lies inside its sibling's ball). true: the stand's light solver rule (shaded in every direction), through
-  // the shared ReferenceLightSolver.
+  // the shared ReferenceLightSolver (light/kanamaru_light_solver.hpp).
   bool enclosing_balls_shade = false;
 
   static LightParameters default_kanamaru_light();
@@ -46,13 +48,6 @@ struct GenerationRecord {
   int survived = 0;     // new branches kept
   double mean_light = 0;  // over the new branches
 };
-
-class CelestialSphere;
-
-// Seed 000's light of balls[receiver] through all the other balls (exact: every patch ray that can reach a
-// ball is tested against it), where a ball containing the receiver's centre casts no shadow on it.
-LightSample kanamaru_light(const CelestialSphere& sky, const std::vector<LeafBall>& balls, std::size_t receiver,
-                           double transmittance);
 
 class KanamaruGrowth {
  public:
@@ -72,6 +67,7 @@ class KanamaruGrowth {
 
   KanamaruParameters parameters_;
   std::uint64_t seed_;
+  std::unique_ptr<LightSolver> solver_;  // seed 000's rule (light/kanamaru_light_solver.hpp)
   std::vector<GenerationRecord> history_;
 };
 

@@ -11,7 +11,7 @@
 #include "cli/commands.hpp"
 #include "compute/device_choice.hpp"
 #include "light/light_benchmark.hpp"
-#include "stand/stand_benchmark.hpp"
+#include "run/stand_benchmark.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -32,7 +32,7 @@ std::string check_device(const std::string& text) {
   }
 }
 
-// `heliostand bench stand SCENARIO`: the scenario grown as `grow --no-vtk` grows it, timed (stand/stand_benchmark.hpp).
+// `heliostand bench stand SCENARIO`: the scenario grown as `grow --no-vtk` grows it, timed (run/stand_benchmark.hpp).
 void add_bench_stand_command(CLI::App& bench) {
   auto options = std::make_shared<StandBenchmarkOptions>();
   auto output = std::make_shared<std::string>();

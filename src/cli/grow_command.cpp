@@ -7,9 +7,9 @@
 
 #include "cli/commands.hpp"
 #include "compute/device_choice.hpp"
+#include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/memory_estimate.hpp"
-#include "stand/simulation.hpp"
 
 namespace heliostand::cli {
 namespace {

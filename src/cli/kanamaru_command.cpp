@@ -3,8 +3,8 @@
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
-#include "architecture/kanamaru_scenario.hpp"
 #include "cli/commands.hpp"
+#include "experiments/kanamaru/kanamaru_scenario.hpp"
 
 namespace heliostand::cli {
 

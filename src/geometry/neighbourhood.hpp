@@ -16,7 +16,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "survey/plot_bounds.hpp"
+#include "geometry/plot_bounds.hpp"
 
 namespace heliostand {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/checkpoint_access.hpp"
+#include "core/checkpoint_access.hpp"
 
 namespace heliostand {
 

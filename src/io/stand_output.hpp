@@ -17,15 +17,16 @@
 #include <span>
 #include <vector>
 
+#include "core/checkpoint_access.hpp"
 #include "io/csv_writer.hpp"
-#include "io/output_detail.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_manifest.hpp"
-#include "io/stand_snapshot.hpp"
-#include "io/tree_event.hpp"
 #include "io/vtk_time_series_writer.hpp"
-#include "stand/stand_table_ledger.hpp"
-#include "io/checkpoint_access.hpp"
+#include "records/stand_snapshot.hpp"
+#include "records/stand_table_ledger.hpp"
+#include "records/tree_event.hpp"
+#include "records/year_recorder.hpp"
+#include "scenario/output_detail.hpp"
 
 namespace heliostand {
 
@@ -34,13 +35,13 @@ struct StandOutputOptions {
   bool force = false;        // replace an earlier heliostand run in `folder`
   double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
   bool write_vtk = true;     // false: tables only (batch forecasts)
-  OutputDetail detail = OutputDetail::full;  // the VTK blocks (io/output_detail.hpp)
+  OutputDetail detail = OutputDetail::full;  // the VTK blocks (scenario/output_detail.hpp)
   // Take over the folder of an interrupted run (OutputFolder's resume); the tables are reopened by a checkpoint
   // (io/checkpoint_state.hpp), which cuts them back to the rows it counts, instead of being started afresh.
   bool resume = false;
 };
 
-class StandOutput {
+class StandOutput final : public YearRecorder {
  public:
   static constexpr const char* stand_table_file = "stand_table.csv";
   static constexpr const char* trees_file = "trees.csv";
@@ -53,10 +54,11 @@ class StandOutput {
   StandOutput(const StandOutput&) = delete;
   StandOutput& operator=(const StandOutput&) = delete;
 
-  void record_events(std::span<const TreeEvent> events);
+  void record_events(std::span<const TreeEvent> events) override;
   // The year's stand_table.csv rows, its flows from the events recorded since the previous call.
-  void write_stand_rows(const StandInventory& inventory);
-  void write_year(const StandSnapshot& snapshot);
+  void write_stand_rows(const StandInventory& inventory) override;
+  void write_year(const StandSnapshot& snapshot) override;
+  bool draws_trunks() const override { return vtk_ != nullptr; }
   // Fills manifest.output_files, renames the tables into place and writes run.json last.
   void finish(RunManifest manifest);
 

@@ -11,9 +11,9 @@
 
 #include "io/csv_writer.hpp"
 #include "io/output_column.hpp"
-#include "io/stand_snapshot.hpp"
-#include "io/tree_event.hpp"
-#include "stand/stand_table_ledger.hpp"
+#include "records/stand_snapshot.hpp"
+#include "records/stand_table_ledger.hpp"
+#include "records/tree_event.hpp"
 
 namespace heliostand {
 

@@ -59,27 +59,13 @@ std::vector<int> tree_of_each_cell(vtkPolyData& block) {
 
 }  // namespace
 
-TreeCellData::TreeCellData()
-    : tree_id_(named_array<vtkIntArray>("tree_id")),
-      status_(named_array<vtkIntArray>("status")),
-      habitat_tree_(named_array<vtkIntArray>("habitat_tree")),
-      light_(named_array<vtkDoubleArray>("light")) {}
+TreeCellData::TreeCellData() : tree_id_(named_array<vtkIntArray>("tree_id")) {}
 
 void TreeCellData::add(const TreeSnapshot& tree, vtkIdType cell_count) {
-  for (vtkIdType i = 0; i < cell_count; ++i) {
-    tree_id_->InsertNextValue(tree.id);
-    status_->InsertNextValue(status_code(tree.status));
-    habitat_tree_->InsertNextValue(tree.hollow_count > 0 ? 1 : 0);
-    light_->InsertNextValue(tree.mean_light);
-  }
+  for (vtkIdType i = 0; i < cell_count; ++i) tree_id_->InsertNextValue(tree.id);
 }
 
-void TreeCellData::attach_to(vtkCellData& cells) const {
-  cells.AddArray(tree_id_);
-  cells.AddArray(status_);
-  cells.AddArray(habitat_tree_);
-  cells.AddArray(light_);
-}
+void TreeCellData::attach_to(vtkCellData& cells) const { cells.AddArray(tree_id_); }
 
 bool add_tree_cell_data(vtkPolyData& block, const StandSnapshot& snapshot) {
   const std::vector<int> trees = tree_of_each_cell(block);
@@ -117,7 +103,7 @@ bool add_tree_cell_data(vtkPolyData& block, const StandSnapshot& snapshot) {
   const vtkSmartPointer<vtkDataArray> arrays[] = {tree_id,      status,      habitat_tree,  light,
                                                   species_code, removal_age, removal_reason};
   for (const auto& array : arrays) {
-    data.RemoveArray(array->GetName());  // what a builder wrote itself (TreeCellData) is replaced by the same values
+    data.RemoveArray(array->GetName());  // a builder's tree_id (TreeCellData), replaced by the same values
     data.AddArray(array);
   }
   if (block.GetFieldData() == nullptr) block.SetFieldData(vtkSmartPointer<vtkFieldData>::New());

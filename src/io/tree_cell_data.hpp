@@ -8,27 +8,25 @@
 //   death or removal, -1 while alive), removal_reason (index into the field array `removal_reasons`, 0 = none).
 // A cell whose tree is not in the snapshot gets status -1 and the "none" values. Arrays: docs/formats.md.
 #include <vtkCellData.h>
-#include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "io/stand_snapshot.hpp"
+#include "records/stand_snapshot.hpp"
 
 namespace heliostand {
 
-// For a builder that appends trees' cells one tree at a time: collects tree_id, status, habitat_tree and light
-// per cell (add_tree_cell_data then completes the set).
+// For a builder that appends trees' cells one tree at a time: collects the cell array `tree_id`, which is all a
+// builder has to say; add_tree_cell_data writes the attributes from it, once, for every block alike.
 class TreeCellData {
  public:
   TreeCellData();
-  // Appends `cell_count` cells' worth of the tree's attributes.
+  // Appends `cell_count` cells drawn for `tree`.
   void add(const TreeSnapshot& tree, vtkIdType cell_count);
   void attach_to(vtkCellData& cells) const;
 
  private:
-  vtkSmartPointer<vtkIntArray> tree_id_, status_, habitat_tree_;
-  vtkSmartPointer<vtkDoubleArray> light_;
+  vtkSmartPointer<vtkIntArray> tree_id_;
 };
 
 // Status of a cell whose tree_id names no tree of the snapshot.

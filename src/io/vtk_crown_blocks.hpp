@@ -1,11 +1,11 @@
 #pragma once
-// The lighter blocks of the yearly multiblock, for the levels of detail below `full` (io/output_detail.hpp):
+// The lighter blocks of the yearly multiblock, for the levels of detail below `full` (scenario/output_detail.hpp):
 // a tree drawn as its stem axis and a closed crown envelope, or as one cone. Every cell carries its tree's
 // attributes (tree_cell_data.hpp), so Threshold and selections by tree work on them. Arrays: docs/formats.md.
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "io/stand_snapshot.hpp"
+#include "records/stand_snapshot.hpp"
 
 namespace heliostand {
 

@@ -6,7 +6,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "io/stand_snapshot.hpp"
+#include "records/stand_snapshot.hpp"
 
 namespace heliostand {
 

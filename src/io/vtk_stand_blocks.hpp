@@ -11,8 +11,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "io/output_detail.hpp"
-#include "io/stand_snapshot.hpp"
+#include "records/stand_snapshot.hpp"
+#include "scenario/output_detail.hpp"
 
 namespace heliostand {
 

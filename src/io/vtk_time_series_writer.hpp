@@ -11,8 +11,8 @@
 
 #include "io/output_folder.hpp"
 #include "io/pvd_collection.hpp"
-#include "io/stand_snapshot.hpp"
 #include "io/vtk_stand_blocks.hpp"
+#include "records/stand_snapshot.hpp"
 
 namespace heliostand {
 

@@ -18,11 +18,11 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/checkpoint_access.hpp"
 #include "rng/random_stream.hpp"
 #include "roots/root_parameters.hpp"
 #include "roots/root_segment.hpp"
 #include "roots/soil_grid.hpp"
-#include "io/checkpoint_access.hpp"
 
 namespace heliostand::roots {
 

@@ -7,16 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "io/output_detail.hpp"
 #include "architecture/species.hpp"
-#include "light/light_parameters.hpp"
 #include "compute/device_choice.hpp"
+#include "geometry/plot_bounds.hpp"
+#include "light/light_parameters.hpp"
 #include "scenario/competition_settings.hpp"
+#include "scenario/output_detail.hpp"
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
-#include "survey/plot_bounds.hpp"
-#include "survey/survey_format.hpp"
 #include "survey/survey.hpp"
+#include "survey/survey_format.hpp"
 
 namespace heliostand {
 

@@ -17,21 +17,9 @@
 #include <vector>
 
 #include "architecture/conifer_tree.hpp"
+#include "records/death_cause.hpp"
 
 namespace heliostand {
-
-enum class DeathCause { light, suppression, background };
-
-constexpr std::string_view cause_code(DeathCause cause) {
-  switch (cause) {
-    case DeathCause::light: return "light";
-    case DeathCause::suppression: return "suppression";
-    case DeathCause::background: return "background";
-  }
-  return "unknown";
-}
-inline constexpr DeathCause all_death_causes[] = {DeathCause::light, DeathCause::suppression,
-                                                   DeathCause::background};
 
 // Annual probability of death by suppression for a recent radial growth of `radial_growth_mm` per year.
 double suppression_probability(const SpeciesParameters& species, double radial_growth_mm);

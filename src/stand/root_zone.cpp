@@ -8,9 +8,7 @@
 
 #include "roots/make_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
-#include "roots/root_vtk.hpp"
 #include "roots/soil_file.hpp"
-#include "io/vtk_time_series_writer.hpp"
 #include "scenario/scenario.hpp"
 
 namespace heliostand {
@@ -169,10 +167,6 @@ void RootZone::annotate(StandSnapshot& snapshot) const {
   }
 }
 
-vtkSmartPointer<vtkPolyData> RootZone::roots_block() const { return roots::root_polylines(living_roots()); }
-
-vtkSmartPointer<vtkImageData> RootZone::soil_block() const { return roots::soil_image(soil_); }
-
 }  // namespace heliostand
 
 namespace heliostand {
@@ -189,13 +183,6 @@ std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stan
   auto zone = make_root_zone(scenario, backend);
   if (zone) zone->establish(stand);
   return zone;
-}
-
-void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple) {
-  writer.add_block({"roots", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.roots_block(); },
-                    age_multiple});
-  writer.add_block({"soil", [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> { return zone.soil_block(); },
-                    age_multiple});
 }
 
 }  // namespace heliostand

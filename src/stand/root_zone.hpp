@@ -16,20 +16,16 @@
 #include <optional>
 #include <vector>
 
-#include <vtkImageData.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-
 #include "compute/compute_backend.hpp"
+#include "core/checkpoint_access.hpp"
 #include "coupling/crown_root_balance.hpp"
-#include "io/stand_snapshot.hpp"
+#include "geometry/plot_bounds.hpp"
+#include "records/stand_snapshot.hpp"
 #include "roots/root_field_solver.hpp"
 #include "roots/root_system.hpp"
 #include "roots/soil_grid.hpp"
 #include "scenario/roots_settings.hpp"
 #include "stand/stand.hpp"
-#include "survey/plot_bounds.hpp"
-#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -64,8 +60,6 @@ class RootZone {
 
   // Fills the root columns of trees.csv for the trees of an output year.
   void annotate(StandSnapshot& snapshot) const;
-  vtkSmartPointer<vtkPolyData> roots_block() const;
-  vtkSmartPointer<vtkImageData> soil_block() const;
 
  private:
   friend struct checkpoint::Access;
@@ -90,7 +84,6 @@ roots::SoilGrid make_soil(const SoilSettings& settings, const PlotBounds& plot);
 namespace heliostand {
 
 struct Scenario;
-class VtkTimeSeriesWriter;
 
 // The stand's root zone as the scenario asks, not yet spun up (a resumed run restores it from a checkpoint);
 // nullopt when roots are off.
@@ -100,9 +93,5 @@ std::optional<RootZone> make_root_zone(const Scenario& scenario, const compute::
 // (spun up) under the stand, its root-contact field on `backend`; nullopt when roots are off.
 std::optional<RootZone> establish_root_zone(const Scenario& scenario, const Stand& stand,
                                             const compute::ComputeBackend& backend);
-
-// Adds the `roots` (segment polylines) and `soil` (vtkImageData) blocks to the years the writer writes whose
-// stand age is a multiple of `age_multiple` (scenario key run.roots_output_interval).
-void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple = 1);
 
 }  // namespace heliostand

@@ -1,10 +1,10 @@
 #pragma once
-// Turning the stand into what an output year writes (io/stand_snapshot.hpp), and into what every year's
-// stand_table.csv rows measure (stand/stand_table_ledger.hpp).
-#include "io/stand_snapshot.hpp"
+// Turning the stand into what an output year writes (records/stand_snapshot.hpp), and into what every year's
+// stand_table.csv rows measure (records/stand_table_ledger.hpp).
+#include "core/checkpoint_access.hpp"
+#include "records/stand_snapshot.hpp"
+#include "records/stand_table_ledger.hpp"
 #include "stand/stand.hpp"
-#include "stand/stand_table_ledger.hpp"
-#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 

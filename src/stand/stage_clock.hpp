@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/checkpoint_access.hpp"
+#include "core/checkpoint_access.hpp"
 
 namespace heliostand {
 

@@ -8,10 +8,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/planting_rows.hpp"
+#include "records/stand_metrics.hpp"
 #include "stand/light_response.hpp"
 #include "stand/mortality.hpp"
-#include "geometry/planting_rows.hpp"
-#include "stand/stand_metrics.hpp"
 
 namespace heliostand {
 

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "io/tree_event.hpp"
+#include "core/checkpoint_access.hpp"
 #include "light/light_solver.hpp"
+#include "records/tree_event.hpp"
 #include "stand/hegyi_index.hpp"
 #include "stand/mortality.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
 #include "stand/thinning_trigger.hpp"
-#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 

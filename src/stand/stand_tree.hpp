@@ -7,8 +7,8 @@
 
 #include "architecture/conifer_tree.hpp"
 #include "hollow/hollow_spec.hpp"
-#include "io/tree_status.hpp"
 #include "light/light_solver.hpp"
+#include "records/tree_status.hpp"
 
 namespace heliostand {
 

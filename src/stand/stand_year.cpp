@@ -5,15 +5,15 @@
 namespace heliostand {
 
 StandYear::StandYear(Stand& stand, LightSolver& stand_solver, LightSolver& open_solver, RootZone* roots,
-                     StandOutput* output, StandYearSettings settings, StageClock& clock)
+                     YearRecorder* recorder, StandYearSettings settings, StageClock& clock)
     : stand_(stand),
       stand_solver_(stand_solver),
       open_solver_(open_solver),
       roots_(roots),
-      output_(output),
+      recorder_(recorder),
       settings_(settings),
       clock_(clock),
-      snapshots_(output != nullptr && output->vtk() != nullptr) {}
+      snapshots_(recorder != nullptr && recorder->draws_trunks()) {}
 
 bool StandYear::is_output_year(int year) const {
   return year == settings_.years || year % settings_.output_interval_years == 0;
@@ -22,7 +22,7 @@ bool StandYear::is_output_year(int year) const {
 StandYearResult StandYear::run(int year) {
   StandYearResult result;
   auto record = [&](std::vector<TreeEvent> events) {
-    if (output_) output_->record_events(events);
+    if (recorder_) recorder_->record_events(events);
     result.events.insert(result.events.end(), events.begin(), events.end());
   };
   // 1 grow
@@ -41,21 +41,21 @@ StandYearResult StandYear::run(int year) {
   // 6 thinning
   record(stand_.thin());
   // 7 metrics, 8 write
-  if (output_) clock_.time("output", [&] { write_outputs(year); return 0; });
+  if (recorder_) clock_.time("output", [&] { write_outputs(year); return 0; });
   // 9 let go: without outputs nothing reads a gone tree again; with them, once an output year has shown it gone.
   stand_.release_gone_crowns([&](const StandTree& tree) {
-    return output_ == nullptr || snapshots_.written_as_gone(static_cast<std::size_t>(tree.id));
+    return recorder_ == nullptr || snapshots_.written_as_gone(static_cast<std::size_t>(tree.id));
   });
   return result;
 }
 
 // An output year's stand table measures its snapshot's trees, so each living stem's volume is computed once a year.
 void StandYear::write_outputs(int year) {
-  if (!is_output_year(year)) return output_->write_stand_rows(take_inventory(stand_, year));
+  if (!is_output_year(year)) return recorder_->write_stand_rows(take_inventory(stand_, year));
   StandSnapshot snapshot = snapshots_.take(stand_, year);
   if (roots_) roots_->annotate(snapshot);
-  output_->write_stand_rows(inventory_of(snapshot));
-  output_->write_year(snapshot);
+  recorder_->write_stand_rows(inventory_of(snapshot));
+  recorder_->write_year(snapshot);
 }
 
 }  // namespace heliostand

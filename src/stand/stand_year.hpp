@@ -15,13 +15,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/stand_output.hpp"
+#include "core/checkpoint_access.hpp"
 #include "light/light_solver.hpp"
+#include "records/year_recorder.hpp"
 #include "stand/root_zone.hpp"
 #include "stand/snapshot.hpp"
 #include "stand/stage_clock.hpp"
 #include "stand/stand.hpp"
-#include "io/checkpoint_access.hpp"
 
 namespace heliostand {
 
@@ -39,9 +39,9 @@ struct StandYearResult {
 
 class StandYear {
  public:
-  // `roots` and `output` may be null (no roots; nothing written). `clock` times each step.
+  // `roots` and `recorder` may be null (no roots; nothing recorded). `clock` times each step.
   StandYear(Stand& stand, LightSolver& stand_solver, LightSolver& open_solver, RootZone* roots,
-            StandOutput* output, StandYearSettings settings, StageClock& clock);
+            YearRecorder* recorder, StandYearSettings settings, StageClock& clock);
 
   // Runs year `year` of the run (0 = the established stand) through its steps.
   StandYearResult run(int year);
@@ -55,7 +55,7 @@ class StandYear {
   LightSolver& stand_solver_;
   LightSolver& open_solver_;
   RootZone* roots_;
-  StandOutput* output_;
+  YearRecorder* recorder_;
   StandYearSettings settings_;
   StageClock& clock_;
   SnapshotTracker snapshots_;

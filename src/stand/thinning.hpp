@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "scenario/thinning_event.hpp"  // ThinningMethod and the regimes' settings
 #include "geometry/neighbourhood.hpp"     // StandEdges
-#include "stand/stand_metrics.hpp"       // basal_area_m2, which the targets are stated in
+#include "records/stand_metrics.hpp"       // basal_area_m2, which the targets are stated in
+#include "scenario/thinning_event.hpp"  // ThinningMethod and the regimes' settings
 
 namespace heliostand {
 

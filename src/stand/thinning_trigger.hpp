@@ -20,7 +20,7 @@ struct ThinningTrigger {
   std::optional<int> repeat_every_years;
 };
 
-// The living stand as the conditions see it (stand/stand_metrics.hpp).
+// The living stand as the conditions see it (records/stand_metrics.hpp).
 struct StandMeasures {
   double basal_area_m2_per_ha = 0;
   double top_height_m = 0;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "architecture/species.hpp"
-#include "survey/plot_bounds.hpp"
+#include "geometry/plot_bounds.hpp"
 #include "survey/survey.hpp"
 #include "survey/survey_allometry.hpp"
 #include "survey/survey_format.hpp"

@@ -12,7 +12,7 @@
 
 #include "hollow/broken_stem.hpp"
 #include "hollow/hollow_mesh.hpp"
-#include "hollow/vtp_writer.hpp"
+#include "io/hollow_vtp_writer.hpp"
 
 namespace heliostand::hollow {
 namespace {

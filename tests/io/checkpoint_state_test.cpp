@@ -2,6 +2,7 @@
 // restored into freshly built parts as a resumed run builds them, and saved again gives the same bytes — so every
 // field saved is also restored.
 #include "io/checkpoint_state.hpp"
+#include "io/root_vtk.hpp"
 
 #include <gtest/gtest.h>
 

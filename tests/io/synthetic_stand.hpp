@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/stand_snapshot.hpp"
+#include "records/stand_snapshot.hpp"
 
 namespace heliostand::testing {
 

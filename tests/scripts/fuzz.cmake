@@ -9,7 +9,7 @@ endif()
 set(HELIOSTAND_FUZZ_SECONDS 30 CACHE STRING "Seconds each reader is fuzzed by its CTest")
 foreach(reader IN ITEMS survey scenario soil)
   add_executable(${reader}_fuzz ${PROJECT_SOURCE_DIR}/tests/fuzz/${reader}_fuzz.cpp)
-  target_link_libraries(${reader}_fuzz PRIVATE heliostand_core)
+  target_link_libraries(${reader}_fuzz PRIVATE heliostand_all)
   target_link_options(${reader}_fuzz PRIVATE -fsanitize=fuzzer)
   target_compile_definitions(${reader}_fuzz PRIVATE HELIOSTAND_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   # The fuzzer adds what it finds to the first (writable) corpus folder; the seeds in the repo stay as they are.

@@ -4,7 +4,7 @@
 include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_executable(heliotropism_validation ${PROJECT_SOURCE_DIR}/validation/heliotropism/heliotropism_validation.cpp
                                       ${PROJECT_SOURCE_DIR}/validation/heliotropism/crown_shape.cpp)
-target_link_libraries(heliotropism_validation PRIVATE heliostand_core)
+target_link_libraries(heliotropism_validation PRIVATE heliostand_all)
 target_include_directories(heliotropism_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
 # Fig. 6 reads its two layouts from stands/kanamaru-fig6-*.
 target_compile_definitions(heliotropism_validation PRIVATE HELIOSTAND_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -48,7 +48,7 @@ add_test(NAME validation.heliotropism.bad_scenario
 # Figs. 16-17 on the conifer (validation/heliotropism/conifer_findings_validation.cpp; GoogleTest, each TEST a CTest).
 add_executable(heliostand_conifer_findings ${PROJECT_SOURCE_DIR}/validation/heliotropism/conifer_findings_validation.cpp)
 target_include_directories(heliostand_conifer_findings PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)
-target_link_libraries(heliostand_conifer_findings PRIVATE heliostand_core GTest::gtest GTest::gtest_main)
+target_link_libraries(heliostand_conifer_findings PRIVATE heliostand_all GTest::gtest GTest::gtest_main)
 gtest_discover_tests(heliostand_conifer_findings
   DISCOVERY_TIMEOUT 60
   PROPERTIES ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache" LABELS "validation")

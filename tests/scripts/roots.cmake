@@ -5,7 +5,7 @@
 file(GLOB HELIOSTAND_ROOTS_VALIDATION_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/validation/roots/*_validation.cpp)
 add_library(heliostand_roots_experiments STATIC ${PROJECT_SOURCE_DIR}/validation/roots/root_experiments.cpp)
 target_include_directories(heliostand_roots_experiments PUBLIC ${PROJECT_SOURCE_DIR}/validation/roots)
-target_link_libraries(heliostand_roots_experiments PUBLIC heliostand_core)
+target_link_libraries(heliostand_roots_experiments PUBLIC heliostand_all)
 
 add_executable(heliostand_roots_validation ${HELIOSTAND_ROOTS_VALIDATION_SOURCES})
 target_link_libraries(heliostand_roots_validation PRIVATE heliostand_roots_experiments GTest::gtest GTest::gtest_main)

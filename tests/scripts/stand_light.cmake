@@ -5,7 +5,7 @@
 # cores (validation/stand_light/README.md has the command).
 include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_executable(stand_light_validation ${PROJECT_SOURCE_DIR}/validation/stand_light/stand_light_validation.cpp)
-target_link_libraries(stand_light_validation PRIVATE heliostand_core)
+target_link_libraries(stand_light_validation PRIVATE heliostand_all)
 target_include_directories(stand_light_validation PRIVATE ${PROJECT_SOURCE_DIR}/src)
 target_compile_definitions(stand_light_validation PRIVATE HELIOSTAND_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 

@@ -1,5 +1,5 @@
 // Every thinning regime applied to a stand of grown trees (Stand::thin): the right trees leave, and the stand table
-// (stand/stand_metrics.hpp, what stand_table.csv writes) drops by exactly what they carried. Triggered thinnings fire
+// (records/stand_metrics.hpp, what stand_table.csv writes) drops by exactly what they carried. Triggered thinnings fire
 // in the year their condition first holds, and re-arm only when told.
 #include <gtest/gtest.h>
 
@@ -11,13 +11,13 @@
 #include <glm/geometric.hpp>
 
 #include "light/reference_light_solver.hpp"
+#include "records/stand_metrics.hpp"
+#include "records/stand_table_ledger.hpp"
 #include "stand/crop_tree_thinning.hpp"
+#include "stand/production_sky.hpp"
 #include "stand/size_thinning.hpp"
 #include "stand/snapshot.hpp"
-#include "stand/production_sky.hpp"
 #include "stand/stand.hpp"
-#include "stand/stand_metrics.hpp"
-#include "stand/stand_table_ledger.hpp"
 
 namespace heliostand {
 namespace {

@@ -26,9 +26,10 @@
 
 #include "architecture/crown_metrics.hpp"
 #include "architecture/kanamaru_growth.hpp"
-#include "architecture/kanamaru_scenario.hpp"
-#include "crown_shape.hpp"
 #include "core/input_error.hpp"
+#include "crown_shape.hpp"
+#include "experiments/kanamaru/kanamaru_scenario.hpp"
+#include "io/dichotomy_tree_vtk.hpp"
 
 using namespace heliostand;
 

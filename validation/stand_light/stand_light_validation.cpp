@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "rng/random_stream.hpp"
+#include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
-#include "stand/simulation.hpp"
 #include "stand/stand.hpp"
 
 namespace fs = std::filesystem;

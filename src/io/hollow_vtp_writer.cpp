@@ -1,4 +1,4 @@
-#include "hollow/vtp_writer.hpp"
+#include "io/hollow_vtp_writer.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "stand/stand_benchmark.hpp"
+#include "run/stand_benchmark.hpp"
 
 #include <malloc.h>
 #include <sys/resource.h>
@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
-#include "stand/simulation.hpp"
 
 namespace heliostand {
 namespace {

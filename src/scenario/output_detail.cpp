@@ -1,4 +1,4 @@
-#include "io/output_detail.hpp"
+#include "scenario/output_detail.hpp"
 
 namespace heliostand {
 

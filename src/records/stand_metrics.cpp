@@ -1,4 +1,4 @@
-#include "stand/stand_metrics.hpp"
+#include "records/stand_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

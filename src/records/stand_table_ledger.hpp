@@ -12,11 +12,12 @@
 #include <string_view>
 #include <vector>
 
-#include "io/stand_snapshot.hpp"
-#include "io/tree_event.hpp"
-#include "stand/mortality.hpp"
-#include "stand/stand_metrics.hpp"
-#include "io/checkpoint_access.hpp"
+#include "architecture/species.hpp"  // whole_stand_species
+#include "core/checkpoint_access.hpp"
+#include "records/death_cause.hpp"
+#include "records/stand_metrics.hpp"
+#include "records/stand_snapshot.hpp"
+#include "records/tree_event.hpp"
 
 namespace heliostand {
 

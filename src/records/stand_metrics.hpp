@@ -1,6 +1,6 @@
 #pragma once
 // Stand-level forestry metrics of a set of living trees on a plot, per hectare: the living part of a
-// stand_table.csv row (docs/formats.md; the rows themselves: stand/stand_table_ledger.hpp).
+// stand_table.csv row (docs/formats.md; the rows themselves: records/stand_table_ledger.hpp).
 #include <span>
 #include <string>
 

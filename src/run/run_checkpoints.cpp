@@ -1,4 +1,4 @@
-#include "stand/run_checkpoints.hpp"
+#include "run/run_checkpoints.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

@@ -1,6 +1,6 @@
 // The rows of stand_table.csv, year by year: the whole stand and each species, their flows, and production
 // (total production, CAI, MAI), every expectation worked out by hand.
-#include "stand/stand_table_ledger.hpp"
+#include "records/stand_table_ledger.hpp"
 
 #include <gtest/gtest.h>
 

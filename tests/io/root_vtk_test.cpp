@@ -1,4 +1,4 @@
-#include "roots/root_vtk.hpp"
+#include "io/root_vtk.hpp"
 
 #include <gtest/gtest.h>
 

@@ -43,17 +43,8 @@ struct KanamaruRunSummary {
 };
 
 // Grows the scenario and writes to `out`: generations.csv (one row per generation), tips.csv (final living
-// tips), crown_gen_NNNN.vtp (write_crown_vtp) and
+// tips), crown_gen_NNNN.vtp (io/dichotomy_tree_vtk.hpp) and
 // crown.pvd. The folder is created; existing files of these names are replaced.
 KanamaruRunSummary run_kanamaru(const KanamaruScenario& scenario, const std::filesystem::path& out);
-
-// Drawn radius of a branch carrying one tip, in branch lengths (a branch carrying n tips: this × sqrt(n)).
-inline constexpr double kanamaru_tip_drawing_radius = 0.03;
-
-// The living branches as lines (cell arrays generation, group, is_tip, leaf_ball_radius; point array `radius`,
-// a drawing radius by the pipe model since the model has no wood).
-void write_crown_vtp(const DichotomyTree& tree, double leaf_ball_radius, const std::filesystem::path& path);
-// The living tips (leaf-ball centres) as vertices with a `group` point array.
-void write_tips_vtp(const DichotomyTree& tree, const std::filesystem::path& path);
 
 }  // namespace heliostand

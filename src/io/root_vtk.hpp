@@ -19,3 +19,14 @@ vtkSmartPointer<vtkPolyData> root_polylines(std::span<const RootSystem* const> t
 vtkSmartPointer<vtkImageData> soil_image(const SoilGrid& soil);
 
 }  // namespace heliostand::roots
+
+namespace heliostand {
+
+class RootZone;
+class VtkTimeSeriesWriter;
+
+// Adds the `roots` (segment polylines) and `soil` (vtkImageData) blocks of the stand's root zone to the years the
+// writer writes whose stand age is a multiple of `age_multiple` (scenario key run.roots_output_interval).
+void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple = 1);
+
+}  // namespace heliostand

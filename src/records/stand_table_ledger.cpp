@@ -1,4 +1,4 @@
-#include "stand/stand_table_ledger.hpp"
+#include "records/stand_table_ledger.hpp"
 
 #include <cmath>
 #include <stdexcept>

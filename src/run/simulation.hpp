@@ -20,7 +20,7 @@ struct SimulationOptions {
   bool write_vtk = true;
   bool show_progress = false;  // a progress line on stderr (the CLI turns it on for terminals)
   std::string command_line;    // recorded in run.json
-  // Write a checkpoint after every this many simulated years (0: none; stand/run_checkpoints.hpp).
+  // Write a checkpoint after every this many simulated years (0: none; run/run_checkpoints.hpp).
   int checkpoint_every_years = 0;
   // Continue the interrupted run in output_folder from its newest usable checkpoint instead of starting afresh.
   bool resume = false;

@@ -1,4 +1,4 @@
-#include "roots/root_vtk.hpp"
+#include "io/root_vtk.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -7,11 +7,15 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include "io/vtk_time_series_writer.hpp"
+#include "stand/root_zone.hpp"
+
 namespace heliostand::roots {
 
 namespace {
+// Sized, not reserved (io/vtk_named_array.hpp reserves): every value is set by index.
 template <class Array>
-vtkSmartPointer<Array> named_array(const char* name, vtkIdType size) {
+vtkSmartPointer<Array> sized_array(const char* name, vtkIdType size) {
   auto array = vtkSmartPointer<Array>::New();
   array->SetName(name);
   array->SetNumberOfTuples(size);
@@ -27,11 +31,11 @@ vtkSmartPointer<vtkPolyData> root_polylines(std::span<const RootSystem* const> t
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(2 * segments);
   auto lines = vtkSmartPointer<vtkCellArray>::New();
-  auto radius = named_array<vtkDoubleArray>("radius", 2 * segments);
-  auto type = named_array<vtkIntArray>("type", 2 * segments);
-  auto tree_id = named_array<vtkIntArray>("tree_id", 2 * segments);
-  auto age = named_array<vtkFloatArray>("age", 2 * segments);
-  auto path = named_array<vtkIntArray>("path", 2 * segments);
+  auto radius = sized_array<vtkDoubleArray>("radius", 2 * segments);
+  auto type = sized_array<vtkIntArray>("type", 2 * segments);
+  auto tree_id = sized_array<vtkIntArray>("tree_id", 2 * segments);
+  auto age = sized_array<vtkFloatArray>("age", 2 * segments);
+  auto path = sized_array<vtkIntArray>("path", 2 * segments);
   vtkIdType point = 0;
   for (const RootSystem* tree : trees)
     for (const RootSegment& segment : tree->segments()) {
@@ -70,7 +74,7 @@ vtkSmartPointer<vtkImageData> soil_image(const SoilGrid& soil) {
   // vtkImageData orders points x fastest, then y, then z — the soil grid's own vertex order.
   for (auto [field, name] : {std::pair{SoilField::moisture, "moisture"}, std::pair{SoilField::nutrient, "nutrient"}}) {
     const std::vector<double>& values = soil.values(field);
-    auto array = named_array<vtkDoubleArray>(name, static_cast<vtkIdType>(values.size()));
+    auto array = sized_array<vtkDoubleArray>(name, static_cast<vtkIdType>(values.size()));
     for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
     image->GetPointData()->AddArray(array);
   }
@@ -79,3 +83,20 @@ vtkSmartPointer<vtkImageData> soil_image(const SoilGrid& soil) {
 }
 
 }  // namespace heliostand::roots
+
+namespace heliostand {
+
+void add_root_blocks(VtkTimeSeriesWriter& writer, const RootZone& zone, int age_multiple) {
+  writer.add_block({"roots",
+                    [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> {
+                      return roots::root_polylines(zone.living_roots());
+                    },
+                    age_multiple});
+  writer.add_block({"soil",
+                    [&zone](const StandSnapshot&) -> vtkSmartPointer<vtkDataObject> {
+                      return roots::soil_image(zone.soil());
+                    },
+                    age_multiple});
+}
+
+}  // namespace heliostand

@@ -15,7 +15,7 @@
 
 #include "architecture/shoot.hpp"
 #include "hollow/hollow_mesh.hpp"
-#include "io/tree_status.hpp"
+#include "records/tree_status.hpp"
 
 namespace heliostand {
 

@@ -1,4 +1,4 @@
-#include "stand/simulation.hpp"
+#include "run/simulation.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,12 +7,13 @@
 
 #include "compute/compute_backend.hpp"
 #include "io/checkpoint_state.hpp"
+#include "io/root_vtk.hpp"
 #include "io/stand_output.hpp"
 #include "light/make_light_solver.hpp"
+#include "run/run_checkpoints.hpp"
 #include "stand/establishment.hpp"
 #include "stand/progress.hpp"
 #include "stand/root_zone.hpp"
-#include "stand/run_checkpoints.hpp"
 #include "stand/stage_clock.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"

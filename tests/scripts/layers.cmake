@@ -1,0 +1,33 @@
+# The layers of src/ (docs/architecture.md) are enforced by the build (cmake/HeliostandModule.cmake). These tests
+# prove it: sources compiled exactly as a module's own (its include folder, its link line), which must fail where
+# they include a layer above the module or VTK from a model, and must build where they include a layer below (the
+# controls). The targets are not part of `all`; each test builds its own. They share the build tree, so they run one
+# at a time (RESOURCE_LOCK).
+set(LAYERS_DIR ${PROJECT_SOURCE_DIR}/tests/layers)
+function(layer_check name module source expect match)
+  add_library(layers_${name} OBJECT EXCLUDE_FROM_ALL ${LAYERS_DIR}/${source})
+  target_include_directories(layers_${name} PRIVATE ${PROJECT_BINARY_DIR}/layers/${module})
+  target_link_libraries(layers_${name} PRIVATE heliostand_${module})
+  add_test(NAME layers.${name}
+           COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR} -DTARGET=layers_${name} -DEXPECT=${expect}
+                   "-DMATCH=${match}" -P ${LAYERS_DIR}/expect_build.cmake)
+  set_tests_properties(layers.${name} PROPERTIES LABELS "unit" RESOURCE_LOCK build_tree TIMEOUT 300)
+endfunction()
+layer_check(model_cannot_include_the_stand light model_includes_stand.cpp fail "stand/stand\\.hpp: No such file")
+layer_check(model_includes_a_lower_layer light model_includes_lower_layer.cpp pass "")
+layer_check(stand_cannot_include_io stand stand_includes_io.cpp fail "io/stand_output\\.hpp: No such file")
+layer_check(stand_includes_records stand stand_includes_records.cpp pass "")
+layer_check(model_cannot_include_vtk architecture model_includes_vtk.cpp fail "vtkPolyData\\.h: No such file")
+
+# The models link alone: a program on heliostand_models and nothing above it grows and lights a tree.
+add_executable(layers_models_only_program ${LAYERS_DIR}/models_only_program.cpp)
+target_include_directories(layers_models_only_program PRIVATE ${PROJECT_BINARY_DIR}/layers/models)
+target_link_libraries(layers_models_only_program PRIVATE heliostand_models)
+add_test(NAME layers.models_link_alone COMMAND layers_models_only_program)
+set_tests_properties(layers.models_link_alone PROPERTIES LABELS "unit" TIMEOUT 120
+                     ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+
+# No model includes toml++ (which, header-only under /usr/include, the include folders cannot keep out) or VTK.
+add_test(NAME layers.models_include_no_toml_or_vtk
+         COMMAND sh -c "! grep -rnE '#include <(toml|vtk)' '${PROJECT_SOURCE_DIR}/src/light' '${PROJECT_SOURCE_DIR}/src/architecture' '${PROJECT_SOURCE_DIR}/src/roots' '${PROJECT_SOURCE_DIR}/src/coupling' '${PROJECT_SOURCE_DIR}/src/hollow' '${PROJECT_SOURCE_DIR}/src/geometry' '${PROJECT_SOURCE_DIR}/src/rng' '${PROJECT_SOURCE_DIR}/src/compute' '${PROJECT_SOURCE_DIR}/src/core'")
+set_tests_properties(layers.models_include_no_toml_or_vtk PROPERTIES LABELS "unit" TIMEOUT 60)
