@@ -16,6 +16,7 @@
 #include <vtkPointData.h>
 
 #include "io/synthetic_stand.hpp"
+#include "io/tree_cell_data.hpp"
 #include "io/vtk_stand_blocks.hpp"
 
 namespace heliostand {
@@ -59,6 +60,8 @@ TEST_F(FoliageBlock, OnePiecePerLivingFoliageShootWithALeafBall) {
   EXPECT_EQ(block->GetNumberOfCells(), ball_count()) << "one cell (a triangle strip) per piece, nothing else";
   for (const TreeSnapshot& tree : stand_.snapshot.trees)
     EXPECT_EQ(cells_of_tree(*block, tree.id), static_cast<int>(tree.leaf_balls.size())) << "tree " << tree.id;
+  // The builder names each piece's tree; the multiblock (build_stand_multiblock) then adds the tree attributes from it.
+  ASSERT_TRUE(add_tree_cell_data(*block, stand_.snapshot));
   // The tree attributes and the needles' age are on every piece.
   for (const char* name : {"tree_id", "status", "habitat_tree", "light", "foliage_age"}) {
     ASSERT_NE(block->GetCellData()->GetArray(name), nullptr) << name;

@@ -28,6 +28,7 @@
 
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
+#include "io/tree_cell_data.hpp"
 #include "io/vtk_crown_blocks.hpp"
 
 namespace heliostand {
@@ -114,6 +115,8 @@ TEST_F(LevelsOfDetail, EveryTreeHasAClosedEnvelopeAroundAllItsLeafBalls) {
         EXPECT_GE(bounds[2 * axis + 1], ball.centre[axis] + ball.radius - 1e-6) << "tree " << tree.id;
       }
   }
+  // The builder names each cell's tree; the multiblock (build_stand_multiblock) adds the tree attributes from it.
+  ASSERT_TRUE(add_tree_cell_data(*block, stand_.snapshot));
   vtkDataArray* light = block->GetCellData()->GetArray("light");
   ASSERT_NE(light, nullptr);
   EXPECT_DOUBLE_EQ(light->GetTuple1(0), 0.5);  // the tree's mean_light

@@ -11,7 +11,7 @@ function(layer_check name module source expect match)
   add_test(NAME layers.${name}
            COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR} -DTARGET=layers_${name} -DEXPECT=${expect}
                    "-DMATCH=${match}" -P ${LAYERS_DIR}/expect_build.cmake)
-  set_tests_properties(layers.${name} PROPERTIES LABELS "unit" RESOURCE_LOCK build_tree TIMEOUT 300)
+  set_tests_properties(layers.${name} PROPERTIES LABELS "unit" RESOURCE_LOCK build_tree TIMEOUT 900)
 endfunction()
 layer_check(model_cannot_include_the_stand light model_includes_stand.cpp fail "stand/stand\\.hpp: No such file")
 layer_check(model_includes_a_lower_layer light model_includes_lower_layer.cpp pass "")
