@@ -37,7 +37,7 @@ struct OpenCLRootFieldSolver::State {
   glm::dvec3 frame{0.0};
   bool has_soil = false;
   cl::Buffer middle, start, end, segment_id, cell_start, moisture;
-  // One query's apices, probes and answers.
+  // One query's apices, probes and answers, reused by the next query of the year.
   GrowingBuffer tips, excluded, probes, contact_out, moisture_out;
 };
 
@@ -149,6 +149,13 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.kernel.setArg(17, soil_spacing);
   s.kernel.setArg(18, static_cast<cl_int>(s.has_soil ? 1 : 0));
   s.has_year = true;
+}
+
+void OpenCLRootFieldSolver::end_year() {
+  State& s = *state_;
+  s.has_year = false;
+  s.middle = s.start = s.end = s.segment_id = s.cell_start = s.moisture = cl::Buffer();
+  s.tips = s.excluded = s.probes = s.contact_out = s.moisture_out = GrowingBuffer{};
 }
 
 std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTipQuery> tips,

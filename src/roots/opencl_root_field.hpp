@@ -23,6 +23,7 @@ class OpenCLRootFieldSolver final : public RootFieldSolver {
   void begin_year(const RootFieldYear& year) override;
   std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
                                      int probes_per_tip) override;
+  void end_year() override;
 
  private:
   struct State;

@@ -65,6 +65,11 @@ void ReferenceRootFieldSolver::begin_year(const RootFieldYear& year) {
   if (!year_.segments.empty()) index_ = std::make_unique<Index>(year_.segments);
 }
 
+void ReferenceRootFieldSolver::end_year() {
+  index_.reset();
+  year_ = {};
+}
+
 std::vector<RootFieldSample> ReferenceRootFieldSolver::query(std::span<const RootTipQuery> tips,
                                                              std::span<const glm::dvec3> probes, int probes_per_tip) {
   std::vector<RootFieldSample> samples(tips.size());

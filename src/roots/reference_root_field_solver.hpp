@@ -17,6 +17,7 @@ class ReferenceRootFieldSolver final : public RootFieldSolver {
   void begin_year(const RootFieldYear& year) override;
   std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
                                      int probes_per_tip) override;
+  void end_year() override;
 
  private:
   struct Index;

@@ -19,7 +19,9 @@ std::vector<RootFieldSample> RootFieldSolver::solve(const RootFieldInput& input)
   for (const RootTipQuery& tip : input.tips)
     year.widest_perception_radius_m = std::max(year.widest_perception_radius_m, tip.perception_radius_m);
   begin_year(year);
-  return query(input.tips, input.probes, input.probes_per_tip);
+  std::vector<RootFieldSample> samples = query(input.tips, input.probes, input.probes_per_tip);
+  end_year();
+  return samples;
 }
 
 }  // namespace heliostand::roots

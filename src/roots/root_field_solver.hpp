@@ -112,7 +112,9 @@ class RootFieldSolver {
   // per tip. Any number of queries per year: a tip's answer does not depend on which other tips share its query.
   virtual std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
                                              int probes_per_tip) = 0;
-  // Everything at once: begin_year() with the widest R of the tips, then one query.
+  // After the year's last query: frees what begin_year() built, so nothing of the field is held between years.
+  virtual void end_year() = 0;
+  // Everything at once: begin_year() with the widest R of the tips, one query, end_year().
   std::vector<RootFieldSample> solve(const RootFieldInput& input);
 };
 

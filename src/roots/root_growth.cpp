@@ -120,6 +120,7 @@ RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, R
     }
   }
   if (!queries.tips.empty()) ask();
+  solver.end_year();
 
   // 3. New segments in the composed direction V.
   for (std::size_t t = 0; t < trees.size(); ++t) {

@@ -57,8 +57,12 @@ class CountingSolver final : public RootFieldSolver {
     largest_query = std::max(largest_query, tips.size());
     return reference.query(tips, probes, probes_per_tip);
   }
+  void end_year() override {
+    ++years_ended;
+    reference.end_year();
+  }
   ReferenceRootFieldSolver reference;
-  int years_begun = 0, queries = 0;
+  int years_begun = 0, years_ended = 0, queries = 0;
   std::size_t segments_this_year = 0, parts_this_year = 0, tips_asked = 0, largest_query = 0;
 };
 
@@ -88,6 +92,7 @@ TEST(GrowRoots, BeginsTheFieldOnceAYearAndAsksInChunksOfBuds) {
     const std::size_t tips_before = solver.tips_asked;
     const RootYearSummary summary = grow_roots(stand.pointers, stand.soil, solver, year, 3, chunk);
     EXPECT_EQ(solver.years_begun, years_before + 1) << "year " << year;
+    EXPECT_EQ(solver.years_ended, solver.years_begun) << "nothing of the field is held between years";
     EXPECT_EQ(solver.segments_this_year, segments_before) << "year " << year;
     EXPECT_EQ(solver.parts_this_year, stand.trees.size()) << "one part per tree, not a gathered copy";
     const std::size_t buds = solver.tips_asked - tips_before;
