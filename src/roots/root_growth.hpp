@@ -23,8 +23,9 @@ struct RootYearSummary {
   std::vector<double> moisture_taken_by_tree;  // in the order of `trees`
 };
 
-// Buds per query of the root-contact field: what the year's queries and moisture probes hold at once (about
-// 0.7 KiB a bud with 16 probes, ~23 MB per chunk), and on a GPU enough work-items to fill it.
+// Buds per query of the root-contact field: what the year's queries and moisture probes hold at once (with 16
+// probes about 0.8 KiB a bud on the host and 0.3 KiB on the device, ~27 + 10 MB per query), and on a GPU enough
+// work-items to fill it.
 inline constexpr std::size_t default_buds_per_query = std::size_t{1} << 15;
 
 // Grows every tree one year: buds → root-contact field (begun once for the stand's segments, then queried
