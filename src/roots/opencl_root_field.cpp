@@ -14,10 +14,31 @@
 
 namespace heliostand::roots {
 
+// A device buffer that is reused from query to query and only ever grows.
+struct GrowingBuffer {
+  cl::Buffer buffer;
+  std::size_t bytes = 0;
+  const cl::Buffer& holding(const cl::Context& context, cl_mem_flags flags, std::size_t needed) {
+    if (needed > bytes) {
+      bytes = std::max(needed, 2 * bytes);
+      buffer = cl::Buffer(context, flags, bytes);
+    }
+    return buffer;
+  }
+};
+
 struct OpenCLRootFieldSolver::State {
   compute::OpenCLContext cl;
   cl::Program program;
   cl::Kernel kernel;
+  // The year's field (begin_year): the grid's geometry (its index arrays live only on the device), the frame.
+  bool has_year = false;
+  SegmentGrid grid;
+  glm::dvec3 frame{0.0};
+  bool has_soil = false;
+  cl::Buffer middle, start, end, segment_id, cell_start, moisture;
+  // One query's apices, probes and answers, reused by the next query of the year.
+  GrowingBuffer tips, excluded, probes, contact_out, moisture_out;
 };
 
 namespace {
@@ -28,10 +49,20 @@ cl_float4 to_float4(const glm::dvec3& v, double w = 0.0) {
 
 // OpenCL forbids zero-sized buffers: empty inputs get one unused element.
 template <class T>
-cl::Buffer read_only_buffer(const cl::Context& context, std::vector<T>& data) {
-  if (data.empty()) data.emplace_back();
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * data.size(), data.data());
+cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& data) {
+  static const T unused{};
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * std::max<std::size_t>(data.size(), 1),
+                    const_cast<T*>(data.empty() ? &unused : data.data()));
 }
+
+template <class T>
+void write(cl::CommandQueue& queue, const cl::Buffer& buffer, const std::vector<T>& data, std::size_t first = 0) {
+  if (!data.empty()) queue.enqueueWriteBuffer(buffer, CL_TRUE, sizeof(T) * first, sizeof(T) * data.size(), data.data());
+}
+
+// Segments this many at a time pass through the host's float staging arrays on their way to the device, so the
+// host never holds a float copy of the whole stand beside the device's.
+constexpr std::size_t segments_per_upload = std::size_t{1} << 16;
 
 }  // namespace
 
@@ -47,102 +78,130 @@ OpenCLRootFieldSolver::~OpenCLRootFieldSolver() = default;
 
 std::string OpenCLRootFieldSolver::name() const { return "opencl:" + state_->cl.description; }
 
-std::vector<RootFieldSample> OpenCLRootFieldSolver::solve(const RootFieldInput& input) {
-  std::vector<RootFieldSample> samples(input.tips.size());
-  if (input.tips.empty()) return samples;
+void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   State& s = *state_;
-
-  double widest_sphere = 0.0;
-  for (const RootTipQuery& tip : input.tips) widest_sphere = std::max(widest_sphere, tip.perception_radius_m);
+  const SegmentList& segments = year.segments;
   double longest_half = 0.0;
-  for (const RootSegmentLine& segment : input.segments)
-    longest_half = std::max(longest_half, 0.5 * glm::length(segment.end - segment.start));
+  segments.for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3& end) {
+    longest_half = std::max(longest_half, 0.5 * glm::length(end - start));
+  });
   // Cells half the widest reach: a query visits at most 5³ cells and skips those wholly outside its reach,
   // which hugs the sphere more tightly than 3³ cells of a whole reach.
-  const SegmentGrid grid = SegmentGrid::build(input.segments, 0.5 * (widest_sphere + longest_half));
-
+  s.grid = SegmentGrid::build(segments, 0.5 * (year.widest_perception_radius_m + longest_half));
   // One frame origin for everything on the device keeps float positions small (sub-micrometre over 100 m).
-  const glm::dvec3 frame = input.soil != nullptr ? input.soil->min_corner() : grid.origin;
+  s.frame = year.soil != nullptr ? year.soil->min_corner() : s.grid.origin;
+
   // Segments in cell order (the kernel walks a cell's segments contiguously), each with its midpoint and
-  // half length for a cheap first test, and its index in the caller's list for the exclusions.
-  std::vector<cl_float4> middles, starts, ends, tips, probes;
-  std::vector<cl_int2> excluded;
-  middles.reserve(input.segments.size());
-  starts.reserve(input.segments.size());
-  ends.reserve(input.segments.size());
-  for (int s : grid.cell_segments) {
-    const RootSegmentLine& segment = input.segments[s];
-    middles.push_back(to_float4(0.5 * (segment.start + segment.end) - frame, 0.5 * glm::length(segment.end - segment.start)));
-    starts.push_back(to_float4(segment.start - frame));
-    ends.push_back(to_float4(segment.end - frame));
+  // half length for a cheap first test, and its index in the year's list for the exclusions.
+  const std::size_t count = std::max<std::size_t>(segments.size(), 1);
+  s.middle = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
+  s.start = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
+  s.end = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
+  std::vector<cl_float4> middles, starts, ends;
+  for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
+    const std::size_t last = std::min(segments.size(), first + segments_per_upload);
+    middles.clear();
+    starts.clear();
+    ends.clear();
+    for (std::size_t i = first; i < last; ++i) {
+      const RootSegmentLine segment = segments[static_cast<std::size_t>(s.grid.cell_segments[i])];
+      middles.push_back(to_float4(0.5 * (segment.start + segment.end) - s.frame, 0.5 * glm::length(segment.end - segment.start)));
+      starts.push_back(to_float4(segment.start - s.frame));
+      ends.push_back(to_float4(segment.end - s.frame));
+    }
+    write(s.cl.queue, s.middle, middles, first);
+    write(s.cl.queue, s.start, starts, first);
+    write(s.cl.queue, s.end, ends, first);
   }
-  // Apices in cell order too: neighbouring work-items then walk the same cells (SIMD lanes and caches agree).
-  std::vector<std::size_t> order(input.tips.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::vector<std::size_t> tip_cell(input.tips.size());
-  for (std::size_t t = 0; t < input.tips.size(); ++t) tip_cell[t] = grid.cell_index(grid.cell_of(input.tips[t].position));
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
-  const int probes_per_tip = input.soil != nullptr ? std::max(input.probes_per_tip, 0) : 0;
-  for (std::size_t t : order) {
-    const RootTipQuery& tip = input.tips[t];
-    tips.push_back(to_float4(tip.position - frame, tip.perception_radius_m));
-    excluded.push_back({{tip.excluded[0], tip.excluded[1]}});
-    for (int p = 0; p < probes_per_tip; ++p) probes.push_back(to_float4(input.probes[t * probes_per_tip + p]));
-  }
+  s.segment_id = read_only_buffer(s.cl.context, s.grid.cell_segments);
+  s.cell_start = read_only_buffer(s.cl.context, s.grid.cell_start);
+  // The device has the grid's index arrays now; the host keeps only its geometry (to sort apices by cell).
+  std::vector<int>().swap(s.grid.cell_segments);
+  std::vector<int>().swap(s.grid.cell_start);
+
   std::vector<float> moisture;
   cl_int4 soil_vertices{{2, 2, 2, 0}};
   cl_float4 soil_origin{{0, 0, 0, 0}};
   float soil_spacing = 1.0f;
-  if (input.soil != nullptr) {
-    const std::vector<double>& values = input.soil->values(SoilField::moisture);
+  s.has_soil = year.soil != nullptr;
+  if (s.has_soil) {
+    const std::vector<double>& values = year.soil->values(SoilField::moisture);
     moisture.assign(values.begin(), values.end());
-    const glm::ivec3 n = input.soil->vertex_counts();
+    const glm::ivec3 n = year.soil->vertex_counts();
     soil_vertices = {{n.x, n.y, n.z, 0}};
-    soil_origin = to_float4(input.soil->min_corner() - frame);
-    soil_spacing = static_cast<float>(input.soil->geometry().spacing_m);
+    soil_origin = to_float4(year.soil->min_corner() - s.frame);
+    soil_spacing = static_cast<float>(year.soil->geometry().spacing_m);
   }
-  std::vector<int> cell_start = grid.cell_start, segment_ids = grid.cell_segments;
+  s.moisture = read_only_buffer(s.cl.context, moisture);
 
-  cl::Buffer middle_buffer = read_only_buffer(s.cl.context, middles);
-  cl::Buffer start_buffer = read_only_buffer(s.cl.context, starts);
-  cl::Buffer end_buffer = read_only_buffer(s.cl.context, ends);
-  cl::Buffer segment_id_buffer = read_only_buffer(s.cl.context, segment_ids);
-  cl::Buffer cell_start_buffer = read_only_buffer(s.cl.context, cell_start);
-  cl::Buffer tip_buffer = read_only_buffer(s.cl.context, tips);
-  cl::Buffer excluded_buffer = read_only_buffer(s.cl.context, excluded);
-  cl::Buffer probe_buffer = read_only_buffer(s.cl.context, probes);
-  cl::Buffer moisture_buffer = read_only_buffer(s.cl.context, moisture);
-  const std::size_t tip_count = input.tips.size();
-  cl::Buffer contact_out(s.cl.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
-  cl::Buffer moisture_out(s.cl.context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count);
+  s.kernel.setArg(0, s.middle);
+  s.kernel.setArg(1, s.start);
+  s.kernel.setArg(2, s.end);
+  s.kernel.setArg(3, s.segment_id);
+  s.kernel.setArg(4, s.cell_start);
+  s.kernel.setArg(5, cl_int4{{s.grid.dims.x, s.grid.dims.y, s.grid.dims.z, 0}});
+  s.kernel.setArg(6, to_float4(s.grid.origin - s.frame));
+  s.kernel.setArg(7, static_cast<float>(s.grid.cell_size_m));
+  s.kernel.setArg(8, static_cast<float>(s.grid.longest_half_m));
+  s.kernel.setArg(14, s.moisture);
+  s.kernel.setArg(15, soil_vertices);
+  s.kernel.setArg(16, soil_origin);
+  s.kernel.setArg(17, soil_spacing);
+  s.kernel.setArg(18, static_cast<cl_int>(s.has_soil ? 1 : 0));
+  s.has_year = true;
+}
 
-  int arg = 0;
-  s.kernel.setArg(arg++, middle_buffer);
-  s.kernel.setArg(arg++, start_buffer);
-  s.kernel.setArg(arg++, end_buffer);
-  s.kernel.setArg(arg++, segment_id_buffer);
-  s.kernel.setArg(arg++, cell_start_buffer);
-  s.kernel.setArg(arg++, cl_int4{{grid.dims.x, grid.dims.y, grid.dims.z, 0}});
-  s.kernel.setArg(arg++, to_float4(grid.origin - frame));
-  s.kernel.setArg(arg++, static_cast<float>(grid.cell_size_m));
-  s.kernel.setArg(arg++, static_cast<float>(grid.longest_half_m));
-  s.kernel.setArg(arg++, tip_buffer);
-  s.kernel.setArg(arg++, excluded_buffer);
-  s.kernel.setArg(arg++, static_cast<cl_int>(tip_count));
-  s.kernel.setArg(arg++, probe_buffer);
-  s.kernel.setArg(arg++, static_cast<cl_int>(probes_per_tip));
-  s.kernel.setArg(arg++, moisture_buffer);
-  s.kernel.setArg(arg++, soil_vertices);
-  s.kernel.setArg(arg++, soil_origin);
-  s.kernel.setArg(arg++, soil_spacing);
-  s.kernel.setArg(arg++, static_cast<cl_int>(input.soil != nullptr ? 1 : 0));
-  s.kernel.setArg(arg++, contact_out);
-  s.kernel.setArg(arg++, moisture_out);
+void OpenCLRootFieldSolver::end_year() {
+  State& s = *state_;
+  s.has_year = false;
+  s.middle = s.start = s.end = s.segment_id = s.cell_start = s.moisture = cl::Buffer();
+  s.tips = s.excluded = s.probes = s.contact_out = s.moisture_out = GrowingBuffer{};
+}
+
+std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTipQuery> tips,
+                                                          std::span<const glm::dvec3> probes, int probes_per_tip) {
+  State& s = *state_;
+  if (!s.has_year) throw std::logic_error("OpenCLRootFieldSolver::query before begin_year");
+  std::vector<RootFieldSample> samples(tips.size());
+  if (tips.empty()) return samples;
+
+  // Apices in cell order: neighbouring work-items then walk the same cells (SIMD lanes and caches agree).
+  std::vector<std::size_t> order(tips.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> tip_cell(tips.size());
+  for (std::size_t t = 0; t < tips.size(); ++t) tip_cell[t] = s.grid.cell_index(s.grid.cell_of(tips[t].position));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
+  const int per_tip = s.has_soil ? std::max(probes_per_tip, 0) : 0;
+  std::vector<cl_float4> tip_data, probe_data;
+  std::vector<cl_int2> excluded;
+  tip_data.reserve(tips.size());
+  excluded.reserve(tips.size());
+  probe_data.reserve(tips.size() * static_cast<std::size_t>(per_tip));
+  for (std::size_t t : order) {
+    const RootTipQuery& tip = tips[t];
+    tip_data.push_back(to_float4(tip.position - s.frame, tip.perception_radius_m));
+    excluded.push_back({{tip.excluded[0], tip.excluded[1]}});
+    for (int p = 0; p < per_tip; ++p) probe_data.push_back(to_float4(probes[t * per_tip + p]));
+  }
+  if (probe_data.empty()) probe_data.emplace_back();
+
+  const std::size_t tip_count = tips.size();
+  const cl::Context& context = s.cl.context;
+  s.kernel.setArg(9, s.tips.holding(context, CL_MEM_READ_ONLY, sizeof(cl_float4) * tip_count));
+  s.kernel.setArg(10, s.excluded.holding(context, CL_MEM_READ_ONLY, sizeof(cl_int2) * tip_count));
+  s.kernel.setArg(11, static_cast<cl_int>(tip_count));
+  s.kernel.setArg(12, s.probes.holding(context, CL_MEM_READ_ONLY, sizeof(cl_float4) * probe_data.size()));
+  s.kernel.setArg(13, static_cast<cl_int>(per_tip));
+  s.kernel.setArg(19, s.contact_out.holding(context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count));
+  s.kernel.setArg(20, s.moisture_out.holding(context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count));
+  write(s.cl.queue, s.tips.buffer, tip_data);
+  write(s.cl.queue, s.excluded.buffer, excluded);
+  write(s.cl.queue, s.probes.buffer, probe_data);
   s.cl.queue.enqueueNDRangeKernel(s.kernel, cl::NullRange, cl::NDRange(tip_count), cl::NullRange);
 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);
-  s.cl.queue.enqueueReadBuffer(contact_out, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
-  s.cl.queue.enqueueReadBuffer(moisture_out, CL_TRUE, 0, sizeof(cl_float4) * tip_count, pulls.data());
+  s.cl.queue.enqueueReadBuffer(s.contact_out.buffer, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
+  s.cl.queue.enqueueReadBuffer(s.moisture_out.buffer, CL_TRUE, 0, sizeof(cl_float4) * tip_count, pulls.data());
   for (std::size_t i = 0; i < tip_count; ++i) {
     RootFieldSample& sample = samples[order[i]];
     sample.contact_avoidance = {contacts[i].s[0], contacts[i].s[1], contacts[i].s[2]};

@@ -1,7 +1,8 @@
 #pragma once
-// The root-contact field on OpenCL (kernel cl/roots.cl, float on the device). The host builds the
-// uniform segment grid (segment_grid.hpp), converts positions to floats relative to one frame origin,
-// and reads back one contact vector and one moisture pull per apex. It runs on the compute backend's device
+// The root-contact field on OpenCL (kernel cl/roots.cl, float on the device). Once a year (begin_year) the host
+// builds the uniform segment grid (segment_grid.hpp) and uploads the segments, as floats relative to one frame
+// origin, and the soil's moisture; each query then uploads only its apices and probes and reads back one contact
+// vector and one moisture pull per apex. It runs on the compute backend's device
 // (compute/compute_backend.hpp), in the context and queue the light solver uses too.
 #include <memory>
 
@@ -19,7 +20,10 @@ class OpenCLRootFieldSolver final : public RootFieldSolver {
   explicit OpenCLRootFieldSolver(const compute::OpenCLContext& device);
   ~OpenCLRootFieldSolver() override;
   std::string name() const override;
-  std::vector<RootFieldSample> solve(const RootFieldInput& input) override;
+  void begin_year(const RootFieldYear& year) override;
+  std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
+                                     int probes_per_tip) override;
+  void end_year() override;
 
  private:
   struct State;

@@ -25,41 +25,75 @@ glm::dvec3 moisture_pull(const glm::dvec3& apex, double perception_radius_m, std
   return pull;
 }
 
-std::vector<RootFieldSample> ReferenceRootFieldSolver::solve(const RootFieldInput& input) {
-  std::vector<RootFieldSample> samples(input.tips.size());
-  const std::size_t probes = static_cast<std::size_t>(std::max(input.probes_per_tip, 0));
-  if (input.soil != nullptr && probes > 0)
-    for (std::size_t t = 0; t < input.tips.size(); ++t)
-      samples[t].moisture_pull = moisture_pull(input.tips[t].position, input.tips[t].perception_radius_m,
-                                               input.probes.subspan(t * probes, probes), *input.soil);
-  if (input.segments.empty()) return samples;
-
-  std::vector<double> midpoints;
-  midpoints.reserve(3 * input.segments.size());
+// The year's k-d tree over segment midpoints (FLANN keeps pointers into `midpoints`, so they live together).
+// The year's k-d tree over segment midpoints (FLANN keeps pointers into `midpoints`, so they live together).
+struct ReferenceRootFieldSolver::Index {
   double longest_half = 0.0;
-  for (const RootSegmentLine& segment : input.segments) {
-    const glm::dvec3 middle = 0.5 * (segment.start + segment.end);
-    midpoints.insert(midpoints.end(), {middle.x, middle.y, middle.z});
-    longest_half = std::max(longest_half, 0.5 * glm::length(segment.end - segment.start));
+  std::vector<double> midpoints;  // x y z per segment
+  flann::KDTreeSingleIndex<flann::L2_Simple<double>> tree;
+
+  explicit Index(const SegmentList& segments)
+      : longest_half(longest_half_of(segments)),
+        midpoints(midpoints_of(segments)),
+        tree(flann::Matrix<double>(midpoints.data(), segments.size(), 3), flann::KDTreeSingleIndexParams(12)) {
+    tree.buildIndex();
   }
-  const flann::Matrix<double> points(midpoints.data(), input.segments.size(), 3);
-  flann::KDTreeSingleIndex<flann::L2_Simple<double>> index(points, flann::KDTreeSingleIndexParams(12));
-  index.buildIndex();
+  static double longest_half_of(const SegmentList& segments) {
+    double longest = 0.0;
+    segments.for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3& end) {
+      longest = std::max(longest, 0.5 * glm::length(end - start));
+    });
+    return longest;
+  }
+  static std::vector<double> midpoints_of(const SegmentList& segments) {
+    std::vector<double> midpoints;
+    midpoints.reserve(3 * segments.size());
+    segments.for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3& end) {
+      const glm::dvec3 middle = 0.5 * (start + end);
+      midpoints.insert(midpoints.end(), {middle.x, middle.y, middle.z});
+    });
+    return midpoints;
+  }
+};
+
+ReferenceRootFieldSolver::ReferenceRootFieldSolver() = default;
+ReferenceRootFieldSolver::~ReferenceRootFieldSolver() = default;
+
+void ReferenceRootFieldSolver::begin_year(const RootFieldYear& year) {
+  index_.reset();
+  year_ = year;
+  if (!year_.segments.empty()) index_ = std::make_unique<Index>(year_.segments);
+}
+
+void ReferenceRootFieldSolver::end_year() {
+  index_.reset();
+  year_ = {};
+}
+
+std::vector<RootFieldSample> ReferenceRootFieldSolver::query(std::span<const RootTipQuery> tips,
+                                                             std::span<const glm::dvec3> probes, int probes_per_tip) {
+  std::vector<RootFieldSample> samples(tips.size());
+  const std::size_t per_tip = static_cast<std::size_t>(std::max(probes_per_tip, 0));
+  if (year_.soil != nullptr && per_tip > 0)
+    for (std::size_t t = 0; t < tips.size(); ++t)
+      samples[t].moisture_pull = moisture_pull(tips[t].position, tips[t].perception_radius_m,
+                                               probes.subspan(t * per_tip, per_tip), *year_.soil);
+  if (!index_) return samples;
+
   flann::SearchParams search;
   search.sorted = false;
-
   std::vector<std::vector<std::size_t>> found(1);
   std::vector<std::vector<double>> distances(1);
-  for (std::size_t t = 0; t < input.tips.size(); ++t) {
-    const RootTipQuery& tip = input.tips[t];
+  for (std::size_t t = 0; t < tips.size(); ++t) {
+    const RootTipQuery& tip = tips[t];
     double query_point[3] = {tip.position.x, tip.position.y, tip.position.z};
     const flann::Matrix<double> query(query_point, 1, 3);
-    const double reach = tip.perception_radius_m + longest_half;
-    index.radiusSearch(query, found, distances, static_cast<float>(reach * reach * (1.0 + 1e-5) + 1e-9), search);
+    const double reach = tip.perception_radius_m + index_->longest_half;
+    index_->tree.radiusSearch(query, found, distances, static_cast<float>(reach * reach * (1.0 + 1e-5) + 1e-9), search);
     RootFieldSample& sample = samples[t];
     for (std::size_t s : found[0]) {
       if (static_cast<int>(s) == tip.excluded[0] || static_cast<int>(s) == tip.excluded[1]) continue;
-      const glm::dvec3 toward = nearest_point_on_segment(tip.position, input.segments[s]) - tip.position;
+      const glm::dvec3 toward = nearest_point_on_segment(tip.position, year_.segments[s]) - tip.position;
       const double distance = glm::length(toward);
       if (distance >= tip.perception_radius_m || distance < touching_distance_m) continue;
       sample.contact_avoidance -= toward / distance;

@@ -7,6 +7,7 @@
 // ReferenceRootFieldSolver, plain C++ and the oracle, and OpenCLRootFieldSolver (float on the device);
 // make_root_field_solver() (roots/make_root_field_solver.hpp) picks the one of the run's compute backend.
 // The probe directions are inputs, drawn on the host, so both backends see the same probes.
+#include <cstddef>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +29,60 @@ struct RootTipQuery {
   int excluded[2] = {-1, -1};          // segment indices it does not feel: its own segment and its parent
 };
 
+// The segments of one year's field seen as ONE indexed list without copying them: the trees' own segment lists
+// (or any lists of start/end pairs) one after another. Segment i of the list is entry i − first(part) of its part.
+// The lists must outlive every query of the year (they do: the trees change only after all queries).
+class SegmentList {
+ public:
+  SegmentList() = default;
+  SegmentList(std::span<const RootSegmentLine> lines) { append(lines); }  // NOLINT: a span of lines is a list
+
+  // Any list whose elements have `glm::dvec3 start, end` (RootSegmentLine, RootSegment).
+  template <class Segment>
+  void append(std::span<const Segment> part) {
+    parts_.push_back({part.empty() ? nullptr : reinterpret_cast<const std::byte*>(&part.front().start),
+                      part.empty() ? nullptr : reinterpret_cast<const std::byte*>(&part.front().end), sizeof(Segment),
+                      size_, part.size()});
+    size_ += part.size();
+  }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  std::size_t part_count() const { return parts_.size(); }
+  std::size_t first_of_part(std::size_t part) const { return parts_.at(part).first; }
+  RootSegmentLine operator[](std::size_t i) const;
+  // Visits every segment in order, (index, start, end), without the per-index part search of operator[].
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    for (const Part& part : parts_)
+      for (std::size_t j = 0; j < part.count; ++j)
+        visit(part.first + j, at(part.start, part.stride, j), at(part.end, part.stride, j));
+  }
+
+ private:
+  struct Part {
+    const std::byte* start;  // the first element's `start`
+    const std::byte* end;    // the first element's `end`
+    std::size_t stride;      // bytes from one element to the next
+    std::size_t first;       // index of the part's first segment in the whole list
+    std::size_t count;
+  };
+  static const glm::dvec3& at(const std::byte* first, std::size_t stride, std::size_t j) {
+    return *reinterpret_cast<const glm::dvec3*>(first + j * stride);
+  }
+  std::vector<Part> parts_;
+  std::size_t size_ = 0;
+};
+
+// What every query of one year feels: the roots as they stood at the start of the year, and the soil.
+struct RootFieldYear {
+  SegmentList segments;                     // every living root segment of the stand
+  const SoilGrid* soil = nullptr;           // none: the moisture pull is zero
+  // The widest perception radius of the year's queries. It sizes the OpenCL solver's grid cells (so it must be the
+  // same, and it is, whether the year's tips come in one query or in many); a wider query is still answered exactly.
+  double widest_perception_radius_m = 0.0;
+};
+
+// One call's worth of everything at once (tests, benchmarks): solve() = begin_year() + one query().
 struct RootFieldInput {
   std::span<const RootSegmentLine> segments;  // every living root segment of the stand
   std::span<const RootTipQuery> tips;
@@ -50,8 +105,17 @@ class RootFieldSolver {
  public:
   virtual ~RootFieldSolver() = default;
   virtual std::string name() const = 0;  // "reference" or "opencl:<device>"
-  // One sample per tip, in the order given.
-  virtual std::vector<RootFieldSample> solve(const RootFieldInput& input) = 0;
+  // Once a year: indexes the segments (and, on a device, uploads them and the soil's moisture) for all the
+  // year's queries. Nothing of the segments is copied beyond what the index needs (docs/performance.md).
+  virtual void begin_year(const RootFieldYear& year) = 0;
+  // One sample per tip, in the order given, against the year begun last; `probes` holds probes_per_tip offsets
+  // per tip. Any number of queries per year: a tip's answer does not depend on which other tips share its query.
+  virtual std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
+                                             int probes_per_tip) = 0;
+  // After the year's last query: frees what begin_year() built, so nothing of the field is held between years.
+  virtual void end_year() = 0;
+  // Everything at once: begin_year() with the widest R of the tips, one query, end_year().
+  std::vector<RootFieldSample> solve(const RootFieldInput& input);
 };
 
 }  // namespace heliostand::roots

@@ -1,6 +1,8 @@
 #include "roots/root_growth.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -26,6 +28,9 @@ std::vector<glm::dvec3> draw_moisture_probes(RandomStream& random, int count) {
 
 StandSegments gather_segments(std::span<RootSystem* const> trees) {
   StandSegments stand;
+  std::size_t count = 0;
+  for (const RootSystem* tree : trees) count += tree->segments().size();
+  stand.lines.reserve(count);
   for (const RootSystem* tree : trees) {
     stand.offsets.push_back(static_cast<int>(stand.lines.size()));
     for (const RootSegment& segment : tree->segments()) stand.lines.push_back({segment.start, segment.end});
@@ -33,59 +38,98 @@ StandSegments gather_segments(std::span<RootSystem* const> trees) {
   return stand;
 }
 
-RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
-                           std::uint64_t seed) {
-  RootYearSummary summary;
-  const StandSegments stand = gather_segments(trees);
+namespace {
 
-  // 1. Buds of every tree, each with its perception query and probes.
-  std::vector<std::vector<RootBud>> buds(trees.size());
-  std::vector<RootTipQuery> queries;
+// The queries of one chunk of buds, with their probes, and which bud each one is.
+struct BudQueries {
+  std::vector<RootTipQuery> tips;
   std::vector<glm::dvec3> probes;
-  // One K for the whole solve: the first tree's (species may differ in everything else).
-  const int probes_per_tip = trees.empty() ? 0 : trees[0]->parameters().moisture_probes;
+  std::vector<std::pair<std::size_t, std::size_t>> buds;  // (tree, bud of the tree)
+  void clear() {
+    tips.clear();
+    probes.clear();
+    buds.clear();
+  }
+};
+
+void add_query(const RootSystem& tree, const RootBud& bud, std::size_t first_segment, int probes_per_tip, int year,
+               std::uint64_t seed, BudQueries& queries) {
+  const RootSegment& from = tree.segments()[bud.from_segment];
+  RootTipQuery query;
+  query.position = from.end;
+  query.perception_radius_m = tree.parameters().of(bud.type).perception_radius_m;
+  query.excluded[0] = static_cast<int>(first_segment) + bud.from_segment;
+  query.excluded[1] = from.parent >= 0 ? static_cast<int>(first_segment) + from.parent : -1;
+  queries.tips.push_back(query);
+  RandomStream random(seed, {static_cast<std::uint64_t>(tree.tree_id()), static_cast<std::uint64_t>(year),
+                             organ_root_probe, from.id, static_cast<std::uint64_t>(bud.ordinal)});
+  const std::vector<glm::dvec3> drawn = draw_moisture_probes(random, probes_per_tip);
+  queries.probes.insert(queries.probes.end(), drawn.begin(), drawn.end());
+}
+
+glm::dvec3 direction_of(const RootSystem& tree, const RootBud& bud, const RootFieldSample& sample) {
+  TropismVectors vectors;
+  vectors.inherited = bud.inherited;
+  vectors.diagravitropic = horizontal_of(bud.inherited, bud.horizontal_fallback);
+  vectors.moisture_pull = sample.moisture_pull;
+  vectors.contact_avoidance = sample.contact_avoidance;
+  return compose_direction(tree.parameters().of(bud.type).tropisms, vectors);
+}
+
+}  // namespace
+
+RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
+                           std::uint64_t seed, std::size_t buds_per_query) {
+  RootYearSummary summary;
+  buds_per_query = std::max<std::size_t>(buds_per_query, 1);
+
+  // 1. Buds of every tree, and the field of the year: the roots as they all stand before any of them grows,
+  // seen in the trees' own lists (not copied).
+  std::vector<std::vector<RootBud>> buds(trees.size());
+  RootFieldYear field;
+  field.soil = &soil;
   for (std::size_t t = 0; t < trees.size(); ++t) {
     const RootSystem& tree = *trees[t];
+    field.segments.append(tree.segments());
     buds[t] = tree.buds(year, seed);
-    for (const RootBud& bud : buds[t]) {
-      const RootSegment& from = tree.segments()[bud.from_segment];
-      RootTipQuery query;
-      query.position = from.end;
-      query.perception_radius_m = tree.parameters().of(bud.type).perception_radius_m;
-      query.excluded[0] = stand.offsets[t] + bud.from_segment;
-      query.excluded[1] = from.parent >= 0 ? stand.offsets[t] + from.parent : -1;
-      queries.push_back(query);
-      RandomStream random(seed, {static_cast<std::uint64_t>(tree.tree_id()), static_cast<std::uint64_t>(year),
-                                 organ_root_probe, from.id, static_cast<std::uint64_t>(bud.ordinal)});
-      const std::vector<glm::dvec3> drawn = draw_moisture_probes(random, probes_per_tip);
-      probes.insert(probes.end(), drawn.begin(), drawn.end());
+    for (const RootBud& bud : buds[t])
+      field.widest_perception_radius_m =
+          std::max(field.widest_perception_radius_m, tree.parameters().of(bud.type).perception_radius_m);
+  }
+  solver.begin_year(field);
+
+  // 2. The field at every bud, a chunk of buds per query, so that the queries and their probes (K per bud) never
+  // exist for all buds at once. One K for the whole year: the first tree's (species may differ in everything else).
+  const int probes_per_tip = trees.empty() ? 0 : trees[0]->parameters().moisture_probes;
+  std::vector<std::vector<glm::dvec3>> directions(trees.size());
+  BudQueries queries;
+  auto ask = [&] {
+    const std::vector<RootFieldSample> samples = solver.query(queries.tips, queries.probes, probes_per_tip);
+    for (std::size_t q = 0; q < samples.size(); ++q) {
+      const auto [t, b] = queries.buds[q];
+      directions[t][b] = direction_of(*trees[t], buds[t][b], samples[q]);
+    }
+    queries.clear();
+  };
+  for (std::size_t t = 0; t < trees.size(); ++t) {
+    directions[t].resize(buds[t].size());
+    for (std::size_t b = 0; b < buds[t].size(); ++b) {
+      add_query(*trees[t], buds[t][b], field.segments.first_of_part(t), probes_per_tip, year, seed, queries);
+      queries.buds.emplace_back(t, b);
+      if (queries.tips.size() == buds_per_query) ask();
     }
   }
-
-  // 2. One field solve for the whole stand.
-  RootFieldInput input;
-  input.segments = stand.lines;
-  input.tips = queries;
-  input.probes = probes;
-  input.probes_per_tip = probes_per_tip;
-  input.soil = &soil;
-  const std::vector<RootFieldSample> field = solver.solve(input);
+  if (!queries.tips.empty()) ask();
+  solver.end_year();
 
   // 3. New segments in the composed direction V.
-  std::size_t q = 0;
   for (std::size_t t = 0; t < trees.size(); ++t) {
     RootSystem& tree = *trees[t];
-    for (const RootBud& bud : buds[t]) {
-      const RootFieldSample& sample = field[q++];
-      TropismVectors vectors;
-      vectors.inherited = bud.inherited;
-      vectors.diagravitropic = horizontal_of(bud.inherited, bud.horizontal_fallback);
-      vectors.moisture_pull = sample.moisture_pull;
-      vectors.contact_avoidance = sample.contact_avoidance;
-      tree.add_segment(bud, compose_direction(tree.parameters().of(bud.type).tropisms, vectors), year, soil);
+    for (std::size_t b = 0; b < buds[t].size(); ++b) {
+      tree.add_segment(buds[t][b], directions[t][b], year, soil);
       ++summary.new_segments;
     }
-    // 4. Close the year.
+  // 4. Close the year.
     summary.removed_segments += tree.finish_year(year);
   }
 

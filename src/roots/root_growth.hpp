@@ -2,6 +2,7 @@
 // One year of root growth for every tree of a stand (seed 003, all in one soil: docs/roots.md): all apices perceive
 // the soil and the roots of ALL trees (as they stood at the start of the year, so the result does not depend
 // on the order trees are visited), grow one segment each, age, die, and take up moisture and nutrients.
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -22,10 +23,16 @@ struct RootYearSummary {
   std::vector<double> moisture_taken_by_tree;  // in the order of `trees`
 };
 
-// Grows every tree one year: buds → root-contact field (one solve for the stand) → new segments →
-// finish_year → uptake. Soil recharge is the caller's step (SoilGrid::recharge), once per year.
+// Buds per query of the root-contact field: what the year's queries and moisture probes hold at once (with 16
+// probes about 0.8 KiB a bud on the host and 0.3 KiB on the device, ~27 + 10 MB per query), and on a GPU enough
+// work-items to fill it.
+inline constexpr std::size_t default_buds_per_query = std::size_t{1} << 15;
+
+// Grows every tree one year: buds → root-contact field (begun once for the stand's segments, then queried
+// `buds_per_query` buds at a time) → new segments → finish_year → uptake. The answer does not depend on
+// `buds_per_query`. Soil recharge is the caller's step (SoilGrid::recharge), once per year.
 RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
-                           std::uint64_t seed);
+                           std::uint64_t seed, std::size_t buds_per_query = default_buds_per_query);
 
 // K probe offsets (units of the perception radius) for one bud: K/2 directions uniform on the sphere at
 // radius fractions uniform in the ball, each cast together with its opposite ("antithetic" pairs), so a

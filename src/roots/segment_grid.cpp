@@ -8,16 +8,15 @@
 
 namespace heliostand::roots {
 
-SegmentGrid SegmentGrid::build(std::span<const RootSegmentLine> segments, double min_cell_size_m,
-                               std::size_t max_cells) {
+SegmentGrid SegmentGrid::build(const SegmentList& segments, double min_cell_size_m, std::size_t max_cells) {
   SegmentGrid grid;
   glm::dvec3 low(0.0), high(0.0);
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    const glm::dvec3 middle = 0.5 * (segments[s].start + segments[s].end);
+  segments.for_each([&](std::size_t s, const glm::dvec3& start, const glm::dvec3& end) {
+    const glm::dvec3 middle = 0.5 * (start + end);
     low = s == 0 ? middle : glm::min(low, middle);
     high = s == 0 ? middle : glm::max(high, middle);
-    grid.longest_half_m = std::max(grid.longest_half_m, 0.5 * glm::length(segments[s].end - segments[s].start));
-  }
+    grid.longest_half_m = std::max(grid.longest_half_m, 0.5 * glm::length(end - start));
+  });
   grid.origin = low;
   grid.cell_size_m = std::max(min_cell_size_m, 1e-6);
   auto dims_for = [&](double cell) { return glm::max(glm::ivec3(glm::floor((high - low) / cell)) + 1, glm::ivec3(1)); };
@@ -27,14 +26,14 @@ SegmentGrid SegmentGrid::build(std::span<const RootSegmentLine> segments, double
     grid.dims = dims_for(grid.cell_size_m);
   }
 
-  // Counting sort of the segments by cell.
+  // Counting sort of the segments by cell (cell indices fit an int: at most max_cells cells).
   const std::size_t cells = static_cast<std::size_t>(grid.dims.x) * grid.dims.y * grid.dims.z;
-  std::vector<std::size_t> cell_of_segment(segments.size());
+  std::vector<int> cell_of_segment(segments.size());
   grid.cell_start.assign(cells + 1, 0);
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    cell_of_segment[s] = grid.cell_index(grid.cell_of(0.5 * (segments[s].start + segments[s].end)));
+  segments.for_each([&](std::size_t s, const glm::dvec3& start, const glm::dvec3& end) {
+    cell_of_segment[s] = static_cast<int>(grid.cell_index(grid.cell_of(0.5 * (start + end))));
     ++grid.cell_start[cell_of_segment[s] + 1];
-  }
+  });
   for (std::size_t c = 0; c < cells; ++c) grid.cell_start[c + 1] += grid.cell_start[c];
   grid.cell_segments.resize(segments.size());
   std::vector<int> fill(grid.cell_start.begin(), grid.cell_start.end() - 1);

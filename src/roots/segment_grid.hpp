@@ -1,7 +1,6 @@
 #pragma once
 // A uniform grid over root-segment midpoints in compressed (CSR) form — the spatial index the OpenCL
 // root-contact kernel walks: the segments of cell c are cell_segments[cell_start[c] .. cell_start[c+1]).
-#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,7 +18,7 @@ struct SegmentGrid {
   std::vector<int> cell_segments;  // segment indices, grouped by cell
 
   // `min_cell_size_m` is raised when the grid would exceed `max_cells`.
-  static SegmentGrid build(std::span<const RootSegmentLine> segments, double min_cell_size_m,
+  static SegmentGrid build(const SegmentList& segments, double min_cell_size_m,
                            std::size_t max_cells = std::size_t{1} << 22);
   glm::ivec3 cell_of(const glm::dvec3& point) const;  // clamped into the grid
   std::size_t cell_index(const glm::ivec3& cell) const;
