@@ -175,8 +175,11 @@ TEST_F(LevelsOfDetail, TheStemIsTheAxisZeroShootsWithTheirRadius) {
   int stem_shoots = 0;
   for (int height : stand_.heights) stem_shoots += height;  // one-metre stem shoots
   EXPECT_EQ(block->GetNumberOfLines(), stem_shoots);
-  for (const char* name : {"tree_id", "status", "habitat_tree", "light"})
+  ASSERT_TRUE(add_tree_cell_data(*block, stand_.snapshot));  // as build_stand_multiblock does
+  for (const char* name : {"tree_id", "status", "habitat_tree", "light"}) {
+    ASSERT_NE(block->GetCellData()->GetArray(name), nullptr) << name;
     EXPECT_EQ(block->GetCellData()->GetArray(name)->GetNumberOfTuples(), stem_shoots) << name;
+  }
 }
 
 TEST_F(LevelsOfDetail, TheSizesOfEveryBlockAndYearAreStated) {
