@@ -6,7 +6,8 @@
 set(LAYERS_DIR ${PROJECT_SOURCE_DIR}/tests/layers)
 function(layer_check name module source expect match)
   add_library(layers_${name} OBJECT EXCLUDE_FROM_ALL ${LAYERS_DIR}/${source})
-  target_include_directories(layers_${name} PRIVATE ${PROJECT_BINARY_DIR}/layers/${module})
+  # The module's own include folders, read from its target: whatever the module compiles with, the check does.
+  target_include_directories(layers_${name} PRIVATE $<TARGET_PROPERTY:heliostand_${module},INCLUDE_DIRECTORIES>)
   target_link_libraries(layers_${name} PRIVATE heliostand_${module})
   add_test(NAME layers.${name}
            COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR} -DTARGET=layers_${name} -DEXPECT=${expect}
