@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/angles.hpp"
+#include "light/foliage_clumping.hpp"
 
 namespace heliostand {
 namespace {
@@ -100,6 +101,10 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
       density_[grid_.index(at[0], at[1], at[2])] += weight;
     }
   }
+  // Clumped foliage lets more light through than the same density placed at random: scale each cell's
+  // density by its clumping index (light/foliage_clumping.hpp), computed from the balls' actual shadows.
+  const std::vector<double> omega = cell_clumping_index(occluders, grid_, p.transmittance);
+  for (std::size_t c = 0; c < density_.size(); ++c) density_[c] *= omega[c];
   if (!with_table) return;
   // The optical-depth table: patches are independent, so split them over the cores.
   const auto& patches = sky.patches();
@@ -159,6 +164,17 @@ double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, dou
     tau += grid_.sample(std::span<const double>(density_), at) * step;
   }
   return tau;
+}
+
+// The near/far hand-over. The near field ray-tests every ball whose centre lies within the cut-off; the far
+// field holds every ball, smoothed: the cloud-in-cell deposit puts a ball on the cell centres within one cell of
+// it and the lookup interpolates between cell centres, so a ball reaches the table up to two cells away. Read
+// right at the cut-off, the table still holds much of the near balls just inside it, which the ray test has
+// already counted; at a canopy's top and bottom, where a receiver's rays leave the foliage, nothing beyond
+// makes up for it, and the light came out too dark. Reading one cell further out drops most of that double
+// count and misses about as much of the balls just beyond the cut-off (measured in docs/light.md).
+double FarField::start_distance(double cutoff_m) const {
+  return cutoff_m + std::max({grid_.cell.x, grid_.cell.y, grid_.cell.z});
 }
 
 double FarField::optical_depth(const glm::dvec3& point, int patch) const {

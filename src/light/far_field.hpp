@@ -47,6 +47,9 @@ class FarField {
   const std::vector<float>& optical_depth() const { return depth_; }      // [patch][cell]
   // Expected number of ball hits along patch `patch`'s direction from `point` outward.
   double optical_depth(const glm::dvec3& point, int patch) const;
+  // Distance from a receiver, along each patch direction, at which it reads the far field: one cell beyond the
+  // near-field cut-off, where the smoothed density of the near-field balls (already ray-tested) has faded.
+  double start_distance(double cutoff_m) const;
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
   // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
   double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
