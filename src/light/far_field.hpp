@@ -4,7 +4,9 @@
 // number of balls a ray hits per metre. For every cell centre and every sky patch, a table holds the optical
 // depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
 // ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
-// balls with mean K = tau. Both solvers read the same table (double on the host, float on the device).
+// balls with mean K = tau. Each cell's density is scaled by its clumping index (light/foliage_clumping.hpp), and
+// receivers read the table one cell beyond the cut-off (start_distance). Both solvers read the same table
+// (double on the host, float on the device).
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -43,7 +45,7 @@ class FarField {
            bool with_table = true);
 
   const VoxelGrid& grid() const { return grid_; }
-  const std::vector<double>& density() const { return density_; }         // sigma per cell, 1/m
+  const std::vector<double>& density() const { return density_; }         // Omega * sigma per cell, 1/m
   const std::vector<float>& optical_depth() const { return depth_; }      // [patch][cell]
   // Expected number of ball hits along patch `patch`'s direction from `point` outward.
   double optical_depth(const glm::dvec3& point, int patch) const;
