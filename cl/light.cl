@@ -150,8 +150,9 @@ __kernel void light_each_alone(__global const float4* balls, __global const int*
 
 // Culled: receivers come in tile order; each reads its tile's candidate list (CSR), keeps the occluders whose
 // centre lies within the cut-off of its own (the reference solver's test, in float), then adds the far-field
-// optical depth from `far_start` (one cell beyond the cut-off, FarField::start_distance) outward (table
-// [patch][cell]), attenuating by exp(-(1 - t) tau).
+// optical depth from `far_start` outward (table [patch][cell]), attenuating by exp(-(1 - t) tau). `far_start` is
+// FarField::start_distance: the cut-off, or one cell beyond it with LightParameters::far_field_bias_correction
+// (whose clumping index is already in the table's density).
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
                            __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
