@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace heliostand {
 namespace {
@@ -24,7 +25,8 @@ double slab_clumping(double t = 0.5) {
 struct Slab {
   LightParameters p;
   std::vector<LeafBall> balls;
-  Slab() {
+  explicit Slab(bool bias_corrected = false) {
+    p.far_field_bias_correction = bias_corrected;
     p.periodic = true;
     p.plot_x_max = p.plot_y_max = 10;
     p.far_field_cell_m = 1.0;
@@ -36,6 +38,21 @@ struct Slab {
 
 TEST(FarField, DensityIsCrossSectionPerVolume) {
   Slab slab;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  const double sigma = pi * 0.2 * 0.2;  // per 1 m^3 cell
+  // Inside the slab the lattice deposits exactly sigma into every cell, however the cells fall on it.
+  for (const glm::dvec3 at : {glm::dvec3{3.5, 7.5, 2.5}, glm::dvec3{0.1, 9.9, 3.2}, glm::dvec3{5.0, 5.0, 2.0}})
+    EXPECT_NEAR(far.grid().sample(std::span<const double>(far.density()), at), sigma, 1e-12);
+  // and the deposit is conserved: the whole column holds six balls' cross-sections
+  double column = 0;
+  for (int z = 0; z < far.grid().dims.z; ++z) column += far.density()[far.grid().index(3, 3, z)] * far.grid().cell.z;
+  EXPECT_NEAR(column, 6 * sigma, 1e-12);
+  EXPECT_EQ(far.grid().sample(std::span<const double>(far.density()), {5.0, 5.0, 9.0}), 0.0);
+}
+
+TEST(FarField, BiasCorrectedDensityCarriesTheClumpingIndex) {
+  Slab slab(true);
   const CelestialSphere sky(slab.p);
   const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
   const double sigma = pi * 0.2 * 0.2 * slab_clumping();  // per 1 m^3 cell, times the clumping index
@@ -51,11 +68,13 @@ TEST(FarField, DensityIsCrossSectionPerVolume) {
   EXPECT_EQ(far.grid().sample(std::span<const double>(far.density()), {5.0, 5.0, 9.0}), 0.0);
 }
 
-TEST(FarField, OpticalDepthIsDensityTimesSlantPathToTheTop) {
-  Slab slab;
+class FarFieldBiasCorrection : public ::testing::TestWithParam<bool> {};
+
+TEST_P(FarFieldBiasCorrection, OpticalDepthIsDensityTimesSlantPathToTheTop) {
+  Slab slab(GetParam());
   const CelestialSphere sky(slab.p);
   const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
-  const double sigma = pi * 0.2 * 0.2 * slab_clumping();
+  const double sigma = pi * 0.2 * 0.2 * (GetParam() ? slab_clumping() : 1.0);
   // The lattice stands for a uniform slab 0 < z < 6 (smoothed symmetrically at its faces): from z = 2.5 the
   // column above holds sigma * 3.5, times 1/cos(polar) along a slanted patch direction. Periodic: slanted
   // rays wrap instead of leaving the plot.
@@ -72,6 +91,20 @@ TEST(FarField, OpticalDepthIsDensityTimesSlantPathToTheTop) {
   // above the grid nothing shades
   EXPECT_EQ(far.optical_depth({4.5, 4.5, 50.0}, 0), 0.0);
 }
+
+// Off, receivers read the table right at the cut-off (the light the growth is calibrated on); corrected, one
+// cell beyond it, the cell being the grid's (here coarsened to 2 m).
+TEST_P(FarFieldBiasCorrection, ReceiversReadTheTableAtTheCutoffOrOneCellBeyond) {
+  Slab slab(GetParam());
+  slab.p.far_field_cell_m = 2.0;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  if (GetParam()) EXPECT_EQ(far.start_distance(4.0), 6.0);
+  else EXPECT_EQ(far.start_distance(4.0), 4.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Switch, FarFieldBiasCorrection, ::testing::Bool(),
+                         [](const auto& info) { return std::string(info.param ? "Corrected" : "Uncorrected"); });
 
 TEST(FarField, OpenStandsEndAtTheirEdges) {
   Slab slab;
