@@ -182,7 +182,7 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options) {
       R"({{"benchmark": "light", "seed": {}, "hardware_threads": {},)"
       "\n"
       R"( "parameters": {{"sky_bands": {}, "sky_sectors": {}, "transmittance": {}, "intensity_ratio": {}, )"
-      R"("cutoff_m": {}, "far_field_cell_m": {}, "periodic": {}}},)"
+      R"("cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, "periodic": {}}},)"
       "\n"
       R"( "limits": {{"reference_exact_max": {}, "reference_culled_max": {}, "opencl_exact_max": {}, "subsample": {}}},)"
       "\n"
@@ -191,8 +191,8 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options) {
       R"( "stands": [)"
       "\n",
       options.seed, std::thread::hardware_concurrency(), p.sky_bands, p.sky_sectors, p.transmittance,
-      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.periodic ? "true" : "false", options.reference_exact_max,
-      options.reference_culled_max, options.opencl_exact_max, options.subsample);
+      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.periodic ? "true" : "false",
+      options.reference_exact_max, options.reference_culled_max, options.opencl_exact_max, options.subsample);
   for (std::size_t k = 0; k < options.ball_counts.size(); ++k) {
     text += one_stand(options, options.ball_counts[k]);
     text += k + 1 < options.ball_counts.size() ? ",\n" : "\n";
