@@ -150,13 +150,16 @@ __kernel void light_each_alone(__global const float4* balls, __global const int*
 
 // Culled: receivers come in tile order; each reads its tile's candidate list (CSR), keeps the occluders whose
 // centre lies within the cut-off of its own (the reference solver's test, in float), then adds the far-field
-// optical depth from the cut-off outward (table [patch][cell]), attenuating by exp(-(1 - t) tau).
+// optical depth from `far_start` outward (table [patch][cell]), attenuating by exp(-(1 - t) tau). `far_start` is
+// FarField::start_distance: the cut-off, or one cell beyond it with LightParameters::far_field_bias_correction
+// (whose clumping index is already in the table's density).
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
                            __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
                            __global const float4* patches, __global const float* b0, const float log_t,
                            __global const float* far_depth, const float4 grid_origin, const float4 grid_cell,
-                           const int4 grid_dims, const int periodic, const float cutoff, const float one_minus_t,
+                           const int4 grid_dims, const int periodic, const float cutoff, const float far_start,
+                           const float one_minus_t,
                            __global float4* out) {
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
@@ -175,8 +178,8 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   }
   const int cells = grid_dims.x * grid_dims.y * grid_dims.z;
   for (int p = 0; p < PATCH_COUNT; ++p) {
-    const float3 beyond_cutoff = centre + cutoff * patches[p].xyz;
-    const float tau = grid_sample(far_depth + (size_t)p * cells, beyond_cutoff, grid_origin.xyz, grid_cell.xyz,
+    const float3 start = centre + far_start * patches[p].xyz;
+    const float tau = grid_sample(far_depth + (size_t)p * cells, start, grid_origin.xyz, grid_cell.xyz,
                                   grid_dims, periodic);
     log_b[p] -= one_minus_t * tau;
   }

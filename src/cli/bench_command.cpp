@@ -76,6 +76,8 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   light->add_flag("--periodic", options->parameters.periodic, "Treat the plot as a torus");
+  light->add_flag("--far-field-bias-correction", options->parameters.far_field_bias_correction,
+                  "Correct the far field's dark bias (off by default, as in [light]: docs/light.md)");
   light->add_option("--reference-exact-max", options->reference_exact_max,
                     "Largest stand solved whole by reference exact (above: subsample)")
       ->capture_default_str();

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/angles.hpp"
+#include "light/foliage_clumping.hpp"
 
 namespace heliostand {
 namespace {
@@ -72,7 +73,9 @@ bool VoxelGrid::outside(const glm::dvec3& point) const {
 
 FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const CelestialSphere& sky,
                    bool with_table)
-    : grid_(grid_around(occluders, p, sky.patches().size())), transmittance_(p.transmittance) {
+    : grid_(grid_around(occluders, p, sky.patches().size())),
+      transmittance_(p.transmittance),
+      bias_corrected_(p.far_field_bias_correction) {
   // Longest useful path: horizontal rays in a periodic stand would circle the torus forever.
   max_path_m_ = 4.0 * glm::length(glm::dvec3(grid_.dims) * grid_.cell) + 1.0;
   density_.assign(grid_.cell_count(), 0.0);
@@ -100,6 +103,7 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
       density_[grid_.index(at[0], at[1], at[2])] += weight;
     }
   }
+  if (bias_corrected_) apply_clumping_index(occluders);
   if (!with_table) return;
   // The optical-depth table: patches are independent, so split them over the cores.
   const auto& patches = sky.patches();
@@ -159,6 +163,26 @@ double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, dou
     tau += grid_.sample(std::span<const double>(density_), at) * step;
   }
   return tau;
+}
+
+// The near/far hand-over. The near field ray-tests every ball whose centre lies within the cut-off; the far
+// field holds every ball, smoothed: the cloud-in-cell deposit puts a ball on the cell centres within one cell of
+// it and the lookup interpolates between cell centres, so a ball reaches the table up to two cells away. Read
+// right at the cut-off, the table still holds much of the near balls just inside it, which the ray test has
+// already counted; at a canopy's top and bottom, where a receiver's rays leave the foliage, nothing beyond
+// makes up for it, and the light comes out too dark. The bias correction reads one cell further out: that drops
+// most of the double count and misses about as much of the balls just beyond the cut-off (docs/light.md). Off
+// (the default, which the growth is calibrated on), the table is read at the cut-off.
+double FarField::start_distance(double cutoff_m) const {
+  if (!bias_corrected_) return cutoff_m;
+  return cutoff_m + std::max({grid_.cell.x, grid_.cell.y, grid_.cell.z});
+}
+
+// Clumped foliage lets more light through than the same density placed at random: scale each cell's density by
+// its clumping index (light/foliage_clumping.hpp), computed from the balls' actual shadows.
+void FarField::apply_clumping_index(const OccluderSet& occluders) {
+  const std::vector<double> omega = cell_clumping_index(occluders, grid_, transmittance_);
+  for (std::size_t c = 0; c < density_.size(); ++c) density_[c] *= omega[c];
 }
 
 double FarField::optical_depth(const glm::dvec3& point, int patch) const {

@@ -4,7 +4,10 @@
 // number of balls a ray hits per metre. For every cell centre and every sky patch, a table holds the optical
 // depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
 // ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
-// balls with mean K = tau. Both solvers read the same table (double on the host, float on the device).
+// balls with mean K = tau. With LightParameters::far_field_bias_correction (off by default), each cell's density
+// is scaled by its clumping index (light/foliage_clumping.hpp) and receivers read the table one cell beyond the
+// cut-off (start_distance); off, they read it at the cut-off, with the plain density. Both solvers read the same
+// table (double on the host, float on the device).
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -43,10 +46,14 @@ class FarField {
            bool with_table = true);
 
   const VoxelGrid& grid() const { return grid_; }
-  const std::vector<double>& density() const { return density_; }         // sigma per cell, 1/m
+  const std::vector<double>& density() const { return density_; }  // sigma (corrected: Omega * sigma) per cell, 1/m
   const std::vector<float>& optical_depth() const { return depth_; }      // [patch][cell]
   // Expected number of ball hits along patch `patch`'s direction from `point` outward.
   double optical_depth(const glm::dvec3& point, int patch) const;
+  // Distance from a receiver, along each patch direction, at which it reads the far field: the near-field
+  // cut-off, or with the bias correction one cell beyond it, where the smoothed density of the near-field balls
+  // (already ray-tested) has faded.
+  double start_distance(double cutoff_m) const;
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
   // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
   double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
@@ -56,10 +63,12 @@ class FarField {
   double saturated_hits() const;
 
  private:
+  void apply_clumping_index(const OccluderSet& occluders);
   void sweep(const glm::dvec3& direction, std::span<double> depth) const;
 
   VoxelGrid grid_;
   double transmittance_;
+  bool bias_corrected_;
   double max_path_m_;
   std::vector<double> density_;
   std::vector<float> depth_;

@@ -35,6 +35,7 @@ struct Run {
 
 struct Error {
   double mean_abs_light = 0, max_abs_light = 0, mean_angle_degrees = 0;
+  double mean_light_bias = 0;  // mean (test - truth): negative = too dark
 };
 
 Error error_against(const std::vector<LightSample>& truth, const std::vector<LightSample>& test) {
@@ -43,6 +44,7 @@ Error error_against(const std::vector<LightSample>& truth, const std::vector<Lig
   for (std::size_t k = 0; k < truth.size(); ++k) {
     const double diff = std::abs(truth[k].light - test[k].light);
     e.mean_abs_light += diff;
+    e.mean_light_bias += test[k].light - truth[k].light;
     e.max_abs_light = std::max(e.max_abs_light, diff);
     // a balanced sky has no vector; such balls carry no direction error
     if (glm::length(truth[k].vector) > 0 && glm::length(test[k].vector) > 0) {
@@ -50,7 +52,10 @@ Error error_against(const std::vector<LightSample>& truth, const std::vector<Lig
       ++angles;
     }
   }
-  if (!truth.empty()) e.mean_abs_light /= truth.size();
+  if (!truth.empty()) {
+    e.mean_abs_light /= truth.size();
+    e.mean_light_bias /= truth.size();
+  }
   if (angles > 0) e.mean_angle_degrees /= angles;
   return e;
 }
@@ -96,8 +101,8 @@ std::string run_json(const Run& run, const Run& truth) {
   if (&run != &truth && truth.ran) {
     const Error e = error_against(truth.at_subsample, run.at_subsample);
     text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"
-                        R"("mean_angle_degrees": {:.6g}}})",
-                        e.mean_abs_light, e.max_abs_light, e.mean_angle_degrees);
+                        R"("mean_light_bias": {:.6g}, "mean_angle_degrees": {:.6g}}})",
+                        e.mean_abs_light, e.max_abs_light, e.mean_light_bias, e.mean_angle_degrees);
   }
   return text + "}";
 }
@@ -177,7 +182,7 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options) {
       R"({{"benchmark": "light", "seed": {}, "hardware_threads": {},)"
       "\n"
       R"( "parameters": {{"sky_bands": {}, "sky_sectors": {}, "transmittance": {}, "intensity_ratio": {}, )"
-      R"("cutoff_m": {}, "far_field_cell_m": {}, "periodic": {}}},)"
+      R"("cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, "periodic": {}}},)"
       "\n"
       R"( "limits": {{"reference_exact_max": {}, "reference_culled_max": {}, "opencl_exact_max": {}, "subsample": {}}},)"
       "\n"
@@ -186,8 +191,8 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options) {
       R"( "stands": [)"
       "\n",
       options.seed, std::thread::hardware_concurrency(), p.sky_bands, p.sky_sectors, p.transmittance,
-      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.periodic ? "true" : "false", options.reference_exact_max,
-      options.reference_culled_max, options.opencl_exact_max, options.subsample);
+      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.periodic ? "true" : "false",
+      options.reference_exact_max, options.reference_culled_max, options.opencl_exact_max, options.subsample);
   for (std::size_t k = 0; k < options.ball_counts.size(); ++k) {
     text += one_stand(options, options.ball_counts[k]);
     text += k + 1 < options.ball_counts.size() ? ",\n" : "\n";

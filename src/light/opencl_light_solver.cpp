@@ -325,6 +325,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, grid_dims_arg);
     k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
     k.setArg(arg++, float(parameters_.cutoff_m));
+    k.setArg(arg++, float(far ? far->start_distance(parameters_.cutoff_m) : parameters_.cutoff_m));
     k.setArg(arg++, far_attenuation);
     k.setArg(arg++, out);
     launch(queue, k, device_->cl.device, count);

@@ -32,7 +32,8 @@ void for_each_exact_occluder(const OccluderSet& set, const PlotTorus& torus, std
       }
 }
 
-// Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field beyond the cut-off.
+// Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field from one cell
+// beyond the cut-off (FarField::start_distance).
 LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t> occluders,
                           const std::optional<FarField>& far, const glm::dvec3& centre, const CelestialSphere& sky,
                           const PlotTorus& torus, double t, double cutoff_m) {
@@ -44,8 +45,8 @@ LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t>
     for (auto j : occluders)
       if (ray_hits_ball(centre, patch.direction, set.centres[j], set.radii[j])) b *= t;
     if (far) {
-      const glm::dvec3 beyond_cutoff = torus.wrap(centre + cutoff_m * patch.direction);
-      b *= std::exp(-(1.0 - t) * far->optical_depth(beyond_cutoff, static_cast<int>(q)));
+      const glm::dvec3 far_start = torus.wrap(centre + far->start_distance(cutoff_m) * patch.direction);
+      b *= std::exp(-(1.0 - t) * far->optical_depth(far_start, static_cast<int>(q)));
     }
     intensity.push_back(b);
   }

@@ -4,18 +4,29 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace heliostand {
 namespace {
 
 constexpr double pi = std::numbers::pi;
 
+// The slab's clumping index (light/foliage_clumping.hpp): along each axis a cell's face holds exactly one disc
+// of r = 0.2 (fraction p of the face), so a pixel keeps t or 1 and the mean transmission is 1 - (1 - t) p,
+// darker than the random exp(-(1 - t) p): regular foliage has Omega > 1. (Rasterising the disc changes p by
+// a few %, Omega by < 1e-3.)
+double slab_clumping(double t = 0.5) {
+  const double p = pi * 0.2 * 0.2;
+  return -std::log(1 - (1 - t) * p) / ((1 - t) * p);
+}
+
 // A periodic 10 m x 10 m plot filled with one ball per 1 m cell (centres at cell centres, so each ball's
 // cross-section lands in its own cell), in ball layers z = 0.5 .. 5.5.
 struct Slab {
   LightParameters p;
   std::vector<LeafBall> balls;
-  Slab() {
+  explicit Slab(bool bias_corrected = false) {
+    p.far_field_bias_correction = bias_corrected;
     p.periodic = true;
     p.plot_x_max = p.plot_y_max = 10;
     p.far_field_cell_m = 1.0;
@@ -40,11 +51,30 @@ TEST(FarField, DensityIsCrossSectionPerVolume) {
   EXPECT_EQ(far.grid().sample(std::span<const double>(far.density()), {5.0, 5.0, 9.0}), 0.0);
 }
 
-TEST(FarField, OpticalDepthIsDensityTimesSlantPathToTheTop) {
-  Slab slab;
+TEST(FarField, BiasCorrectedDensityCarriesTheClumpingIndex) {
+  Slab slab(true);
   const CelestialSphere sky(slab.p);
   const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
-  const double sigma = pi * 0.2 * 0.2;
+  const double sigma = pi * 0.2 * 0.2 * slab_clumping();  // per 1 m^3 cell, times the clumping index
+  // Inside the slab the lattice deposits exactly sigma into every cell, however the cells fall on it.
+  for (const glm::dvec3 at : {glm::dvec3{3.5, 7.5, 2.5}, glm::dvec3{0.1, 9.9, 3.2}, glm::dvec3{5.0, 5.0, 2.0}})
+    EXPECT_NEAR(far.grid().sample(std::span<const double>(far.density()), at), sigma, 1e-3 * sigma);
+  // and the deposit is conserved: the whole column holds six balls' cross-sections, scaled by the clumping
+  // index, except the part the top and bottom balls spill into the empty cells beyond the slab (Omega = 1)
+  double column = 0;
+  for (int z = 0; z < far.grid().dims.z; ++z) column += far.density()[far.grid().index(3, 3, z)] * far.grid().cell.z;
+  EXPECT_GT(column, 6 * pi * 0.2 * 0.2 + 1e-3);
+  EXPECT_LE(column, 6 * sigma * (1 + 1e-3));
+  EXPECT_EQ(far.grid().sample(std::span<const double>(far.density()), {5.0, 5.0, 9.0}), 0.0);
+}
+
+class FarFieldBiasCorrection : public ::testing::TestWithParam<bool> {};
+
+TEST_P(FarFieldBiasCorrection, OpticalDepthIsDensityTimesSlantPathToTheTop) {
+  Slab slab(GetParam());
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  const double sigma = pi * 0.2 * 0.2 * (GetParam() ? slab_clumping() : 1.0);
   // The lattice stands for a uniform slab 0 < z < 6 (smoothed symmetrically at its faces): from z = 2.5 the
   // column above holds sigma * 3.5, times 1/cos(polar) along a slanted patch direction. Periodic: slanted
   // rays wrap instead of leaving the plot.
@@ -61,6 +91,20 @@ TEST(FarField, OpticalDepthIsDensityTimesSlantPathToTheTop) {
   // above the grid nothing shades
   EXPECT_EQ(far.optical_depth({4.5, 4.5, 50.0}, 0), 0.0);
 }
+
+// Off, receivers read the table right at the cut-off (the light the growth is calibrated on); corrected, one
+// cell beyond it, the cell being the grid's (here coarsened to 2 m).
+TEST_P(FarFieldBiasCorrection, ReceiversReadTheTableAtTheCutoffOrOneCellBeyond) {
+  Slab slab(GetParam());
+  slab.p.far_field_cell_m = 2.0;
+  const CelestialSphere sky(slab.p);
+  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
+  if (GetParam()) EXPECT_EQ(far.start_distance(4.0), 6.0);
+  else EXPECT_EQ(far.start_distance(4.0), 4.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Switch, FarFieldBiasCorrection, ::testing::Bool(),
+                         [](const auto& info) { return std::string(info.param ? "Corrected" : "Uncorrected"); });
 
 TEST(FarField, OpenStandsEndAtTheirEdges) {
   Slab slab;

@@ -246,6 +246,7 @@ INSTANTIATE_TEST_SUITE_P(Backends, LightSolverTest,
 struct EquivalenceCase {
   bool exact;
   bool periodic;
+  bool far_field_bias_correction = false;  // culled only: both backends read the corrected far field
 };
 
 class LightEquivalenceTest : public ::testing::TestWithParam<EquivalenceCase> {};
@@ -260,6 +261,7 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
   LightParameters p;
   p.exact = GetParam().exact;
   p.periodic = GetParam().periodic;
+  p.far_field_bias_correction = GetParam().far_field_bias_correction;
   const double size = 6.0;
   p.plot_x_max = p.plot_y_max = size;
   p.cutoff_m = 2.0;          // a real split: many occluders near, many far
@@ -285,10 +287,12 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
 
 INSTANTIATE_TEST_SUITE_P(Modes, LightEquivalenceTest,
                          ::testing::Values(EquivalenceCase{true, false}, EquivalenceCase{false, false},
-                                           EquivalenceCase{true, true}, EquivalenceCase{false, true}),
+                                           EquivalenceCase{true, true}, EquivalenceCase{false, true},
+                                           EquivalenceCase{false, false, true}, EquivalenceCase{false, true, true}),
                          [](const auto& info) {
                            return std::string(info.param.exact ? "Exact" : "Culled") +
-                                  (info.param.periodic ? "Periodic" : "Open");
+                                  (info.param.periodic ? "Periodic" : "Open") +
+                                  (info.param.far_field_bias_correction ? "BiasCorrected" : "");
                          });
 
 }  // namespace

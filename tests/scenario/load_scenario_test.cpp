@@ -35,6 +35,7 @@ TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   EXPECT_EQ(s.light.sky_bands, 16);
   EXPECT_DOUBLE_EQ(s.light.transmittance, 0.5);
   EXPECT_FALSE(s.light.periodic);
+  EXPECT_FALSE(s.light.far_field_bias_correction);  // the light the growth is calibrated on
   EXPECT_DOUBLE_EQ(s.light.plot_x_max, 10);
   EXPECT_DOUBLE_EQ(s.light.plot_y_max, 10);
   EXPECT_TRUE(s.thinning.empty());
@@ -54,7 +55,8 @@ TEST(LoadScenario, RunSpeciesAndLightOverrides) {
                                                     "[light]\n"
                                                     "sky_bands = 8\n"
                                                     "exact = true\n"
-                                                    "cutoff_m = 6.5\n");
+                                                    "cutoff_m = 6.5\n"
+                                                    "far_field_bias_correction = true\n");
   const Scenario s = load_scenario(file);
   EXPECT_EQ(s.run.seed, 42u);
   EXPECT_EQ(s.run.output_interval_years, 5);
@@ -68,6 +70,7 @@ TEST(LoadScenario, RunSpeciesAndLightOverrides) {
   EXPECT_EQ(s.light.sky_bands, 8);
   EXPECT_TRUE(s.light.exact);
   EXPECT_DOUBLE_EQ(s.light.cutoff_m, 6.5);
+  EXPECT_TRUE(s.light.far_field_bias_correction);
   EXPECT_EQ(s.light.sky_sectors, 32);
 }
 

@@ -48,7 +48,7 @@ TEST(ScenarioErrors, UnknownKeysAndTables) {
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: detail, device, "
                           "output_interval, roots_output_interval, seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
-                          "far_field_cell_m, ground_albedo, intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
+                          "far_field_bias_correction, far_field_cell_m, ground_albedo, intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
                           "sky, sky_bands, sky_scale, sky_sectors, transmittance)"));
 }
 
@@ -59,14 +59,17 @@ TEST(ScenarioErrors, WrongTypes) {
                                        "[light]\n"
                                        "exact = \"yes\"\n"
                                        "transmittance = \"half\"\n"
+                                       "far_field_bias_correction = 1\n"
                                        "[species]\n"
                                        "todomatsu = 3\n"),
               ElementsAre("scenario.toml:11: key 'run.seed': expected an integer >= 0, got a floating-point number",
                           "scenario.toml:12: key 'run.device': expected a string, got an integer",
-                          "scenario.toml:17: key 'species.todomatsu': expected a table of species parameters "
+                          "scenario.toml:18: key 'species.todomatsu': expected a table of species parameters "
                           "([species.NAME]), got an integer",
                           "scenario.toml:15: key 'light.transmittance': expected a number in (0, 1], got a string",
-                          "scenario.toml:14: key 'light.exact': expected true or false, got a string"));
+                          "scenario.toml:14: key 'light.exact': expected true or false, got a string",
+                          "scenario.toml:16: key 'light.far_field_bias_correction': expected true or false, got an "
+                          "integer"));
 }
 
 TEST(ScenarioErrors, LevelOfDetailAndRootsOutputInterval) {
