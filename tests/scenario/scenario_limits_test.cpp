@@ -96,7 +96,8 @@ TEST(ScenarioLimits, EveryNumericKeyHasALimitCase) {
       {"stand", stand, {"survey", "survey_separator", "multi_stem", "survey_units", "default_species"}},
       {"run", testing::stand_table() + testing::default_run + probe, {"seed", "device", "detail"}},
       {"species.todomatsu", testing::stand_table() + testing::default_run + "[species.todomatsu]\n" + probe, {}},
-      {"light", testing::stand_table() + testing::default_run + "[light]\n" + probe, {"exact", "periodic", "sky"}},
+      {"light", testing::stand_table() + testing::default_run + "[light]\n" + probe,
+       {"exact", "periodic", "sky", "far_field_bias_correction"}},
       {"competition", testing::stand_table() + testing::default_run + "[competition]\n" + probe, {}},
       {"thinning[1]", testing::stand_table() + testing::default_run + "[[thinning]]\nage = 21\nmethod = \"ids\"\n" +
                           "ids = [\"1\"]\n" + probe,
