@@ -35,7 +35,8 @@ cmake -S "$tree" -B "$tree/build" -DCMAKE_BUILD_TYPE=Release $launcher >"$work/c
 selected() {
   grep -v '^#' "$here/mutations.tsv" | while IFS='	' read -r name targets check; do
     if [ $# -eq 0 ]; then printf '%s\t%s\t%s\n' "$name" "$targets" "$check"; continue; fi
-    for want in "$@"; do [ "$want" = "$name" ] && printf '%s\t%s\t%s\n' "$name" "$targets" "$check"; done
+    # (an `if`, not `[ ] &&`: a last name that does not match would end the function, and under set -e the script)
+    for want in "$@"; do if [ "$want" = "$name" ]; then printf '%s\t%s\t%s\n' "$name" "$targets" "$check"; fi; done
   done
 }
 list=$work/selected.tsv
