@@ -51,3 +51,17 @@ function(heliostand_layer name)
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/src/${module} ${layer}/${module} SYMBOLIC)
   endforeach()
 endfunction()
+
+# heliostand_module_group(NAME module...): the INTERFACE library heliostand_NAME of several modules, and the include
+# folder build/layers/NAME of everything they reach (for a program that may use those modules and nothing above).
+function(heliostand_module_group name)
+  add_library(heliostand_${name} INTERFACE)
+  set(reachable)
+  foreach(module IN LISTS ARGN)
+    target_link_libraries(heliostand_${name} INTERFACE heliostand_${module})
+    get_property(below GLOBAL PROPERTY HELIOSTAND_REACHES_${module})
+    list(APPEND reachable ${below})
+  endforeach()
+  list(REMOVE_DUPLICATES reachable)
+  heliostand_layer(${name} ${reachable})
+endfunction()

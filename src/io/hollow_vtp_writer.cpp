@@ -11,14 +11,14 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include "io/vtk_named_array.hpp"
+
 namespace heliostand::hollow {
 
 namespace {
 template <class Array, class T>
 void add_array(vtkPolyData* poly, const char* name, const std::vector<T>& values) {
-  vtkNew<Array> array;
-  array->SetName(name);
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  auto array = sized_named_array<Array>(name, static_cast<vtkIdType>(values.size()));
   for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
   poly->GetPointData()->AddArray(array);
 }

@@ -7,21 +7,11 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include "io/vtk_named_array.hpp"
 #include "io/vtk_time_series_writer.hpp"
 #include "stand/root_zone.hpp"
 
 namespace heliostand::roots {
-
-namespace {
-// Sized, not reserved (io/vtk_named_array.hpp reserves): every value is set by index.
-template <class Array>
-vtkSmartPointer<Array> sized_array(const char* name, vtkIdType size) {
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(size);
-  return array;
-}
-}  // namespace
 
 vtkSmartPointer<vtkPolyData> root_polylines(std::span<const RootSystem* const> trees) {
   vtkIdType segments = 0;
@@ -31,11 +21,11 @@ vtkSmartPointer<vtkPolyData> root_polylines(std::span<const RootSystem* const> t
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(2 * segments);
   auto lines = vtkSmartPointer<vtkCellArray>::New();
-  auto radius = sized_array<vtkDoubleArray>("radius", 2 * segments);
-  auto type = sized_array<vtkIntArray>("type", 2 * segments);
-  auto tree_id = sized_array<vtkIntArray>("tree_id", 2 * segments);
-  auto age = sized_array<vtkFloatArray>("age", 2 * segments);
-  auto path = sized_array<vtkIntArray>("path", 2 * segments);
+  auto radius = sized_named_array<vtkDoubleArray>("radius", 2 * segments);
+  auto type = sized_named_array<vtkIntArray>("type", 2 * segments);
+  auto tree_id = sized_named_array<vtkIntArray>("tree_id", 2 * segments);
+  auto age = sized_named_array<vtkFloatArray>("age", 2 * segments);
+  auto path = sized_named_array<vtkIntArray>("path", 2 * segments);
   vtkIdType point = 0;
   for (const RootSystem* tree : trees)
     for (const RootSegment& segment : tree->segments()) {
@@ -74,7 +64,7 @@ vtkSmartPointer<vtkImageData> soil_image(const SoilGrid& soil) {
   // vtkImageData orders points x fastest, then y, then z — the soil grid's own vertex order.
   for (auto [field, name] : {std::pair{SoilField::moisture, "moisture"}, std::pair{SoilField::nutrient, "nutrient"}}) {
     const std::vector<double>& values = soil.values(field);
-    auto array = sized_array<vtkDoubleArray>(name, static_cast<vtkIdType>(values.size()));
+    auto array = sized_named_array<vtkDoubleArray>(name, static_cast<vtkIdType>(values.size()));
     for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
     image->GetPointData()->AddArray(array);
   }

@@ -32,8 +32,8 @@ void for_each_exact_occluder(const OccluderSet& set, const PlotTorus& torus, std
       }
 }
 
-// Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field from one cell
-// beyond the cut-off (FarField::start_distance).
+// Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field from
+// FarField::start_distance (the cut-off; one cell beyond it with the bias correction).
 LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t> occluders,
                           const std::optional<FarField>& far, const glm::dvec3& centre, const CelestialSphere& sky,
                           const PlotTorus& torus, double t, double cutoff_m) {

@@ -26,24 +26,16 @@ glm::dvec3 moisture_pull(const glm::dvec3& apex, double perception_radius_m, std
 }
 
 // The year's k-d tree over segment midpoints (FLANN keeps pointers into `midpoints`, so they live together).
-// The year's k-d tree over segment midpoints (FLANN keeps pointers into `midpoints`, so they live together).
 struct ReferenceRootFieldSolver::Index {
   double longest_half = 0.0;
   std::vector<double> midpoints;  // x y z per segment
   flann::KDTreeSingleIndex<flann::L2_Simple<double>> tree;
 
   explicit Index(const SegmentList& segments)
-      : longest_half(longest_half_of(segments)),
+      : longest_half(segments.longest_half_m()),
         midpoints(midpoints_of(segments)),
         tree(flann::Matrix<double>(midpoints.data(), segments.size(), 3), flann::KDTreeSingleIndexParams(12)) {
     tree.buildIndex();
-  }
-  static double longest_half_of(const SegmentList& segments) {
-    double longest = 0.0;
-    segments.for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3& end) {
-      longest = std::max(longest, 0.5 * glm::length(end - start));
-    });
-    return longest;
   }
   static std::vector<double> midpoints_of(const SegmentList& segments) {
     std::vector<double> midpoints;

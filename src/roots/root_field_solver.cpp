@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace heliostand::roots {
 
 RootSegmentLine SegmentList::operator[](std::size_t i) const {
@@ -10,6 +12,14 @@ RootSegmentLine SegmentList::operator[](std::size_t i) const {
                                      [](std::size_t index, const Part& p) { return index < p.first; }) - 1;
   const std::size_t j = i - part->first;
   return {at(part->start, part->stride, j), at(part->end, part->stride, j)};
+}
+
+double SegmentList::longest_half_m() const {
+  double longest = 0.0;
+  for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3& end) {
+    longest = std::max(longest, 0.5 * glm::length(end - start));
+  });
+  return longest;
 }
 
 std::vector<RootFieldSample> RootFieldSolver::solve(const RootFieldInput& input) {

@@ -50,6 +50,9 @@ class SegmentList {
   std::size_t part_count() const { return parts_.size(); }
   std::size_t first_of_part(std::size_t part) const { return parts_.at(part).first; }
   RootSegmentLine operator[](std::size_t i) const;
+  // Half the length of the longest segment (0 for none): how far past a query's reach a segment's midpoint may lie
+  // while its nearest point lies within it.
+  double longest_half_m() const;
   // Visits every segment in order, (index, start, end), without the per-index part search of operator[].
   template <class Visit>
   void for_each(Visit&& visit) const {

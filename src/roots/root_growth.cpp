@@ -129,7 +129,7 @@ RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, R
       tree.add_segment(buds[t][b], directions[t][b], year, soil);
       ++summary.new_segments;
     }
-  // 4. Close the year.
+    // 4. Close the year.
     summary.removed_segments += tree.finish_year(year);
   }
 

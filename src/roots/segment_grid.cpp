@@ -15,8 +15,8 @@ SegmentGrid SegmentGrid::build(const SegmentList& segments, double min_cell_size
     const glm::dvec3 middle = 0.5 * (start + end);
     low = s == 0 ? middle : glm::min(low, middle);
     high = s == 0 ? middle : glm::max(high, middle);
-    grid.longest_half_m = std::max(grid.longest_half_m, 0.5 * glm::length(end - start));
   });
+  grid.longest_half_m = segments.longest_half_m();
   grid.origin = low;
   grid.cell_size_m = std::max(min_cell_size_m, 1e-6);
   auto dims_for = [&](double cell) { return glm::max(glm::ivec3(glm::floor((high - low) / cell)) + 1, glm::ivec3(1)); };
