@@ -7,6 +7,7 @@
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
 #include "cli/devices_command.hpp"
+#include "core/parallel_for.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -37,6 +38,11 @@ int run(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "More log output (debug)");
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+  unsigned threads = 0;
+  app.add_option("--threads", threads,
+                 "Threads for the per-tree work (crowns, light response, root buds); the answers do not depend on it. "
+                 "Default: the cores. The OpenCL device chooses its own")
+      ->check(CLI::PositiveNumber);
 
   int status = 0;
   add_check_command(app, status);
@@ -47,7 +53,10 @@ int run(int argc, char** argv) {
   add_devices_command(app);
   add_bench_command(app);
 
-  app.parse_complete_callback([&] { set_up_logging(quiet ? -1 : verbose); });
+  app.parse_complete_callback([&] {
+    set_up_logging(quiet ? -1 : verbose);
+    set_worker_threads(threads);
+  });
   // Subcommands that do not report their own errors (devices, bench) throw out of parse().
   return report_errors([&] {
     try {

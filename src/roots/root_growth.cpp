@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
 #include "geometry/angles.hpp"
 #include "roots/root_direction.hpp"
 
@@ -40,31 +41,31 @@ StandSegments gather_segments(std::span<RootSystem* const> trees) {
 
 namespace {
 
-// The queries of one chunk of buds, with their probes, and which bud each one is.
+// The queries of one chunk of buds, with their probes (K per bud, in the buds' order), and which bud each one is.
 struct BudQueries {
   std::vector<RootTipQuery> tips;
   std::vector<glm::dvec3> probes;
-  std::vector<std::pair<std::size_t, std::size_t>> buds;  // (tree, bud of the tree)
-  void clear() {
-    tips.clear();
-    probes.clear();
-    buds.clear();
-  }
+  std::span<const std::pair<std::size_t, std::size_t>> buds;  // (tree, bud of the tree)
 };
 
-void add_query(const RootSystem& tree, const RootBud& bud, std::size_t first_segment, int probes_per_tip, int year,
-               std::uint64_t seed, BudQueries& queries) {
+RootTipQuery query_of(const RootSystem& tree, const RootBud& bud, std::size_t first_segment) {
   const RootSegment& from = tree.segments()[bud.from_segment];
   RootTipQuery query;
   query.position = from.end;
   query.perception_radius_m = tree.parameters().of(bud.type).perception_radius_m;
   query.excluded[0] = static_cast<int>(first_segment) + bud.from_segment;
   query.excluded[1] = from.parent >= 0 ? static_cast<int>(first_segment) + from.parent : -1;
-  queries.tips.push_back(query);
+  return query;
+}
+
+// Every bud's probes come from its own stream (tree, year, segment, bud), so the buds of a chunk are drawn in
+// parallel and the answer does not depend on the threads.
+std::vector<glm::dvec3> probes_of(const RootSystem& tree, const RootBud& bud, int probes_per_tip, int year,
+                                  std::uint64_t seed) {
+  const RootSegment& from = tree.segments()[bud.from_segment];
   RandomStream random(seed, {static_cast<std::uint64_t>(tree.tree_id()), static_cast<std::uint64_t>(year),
                              organ_root_probe, from.id, static_cast<std::uint64_t>(bud.ordinal)});
-  const std::vector<glm::dvec3> drawn = draw_moisture_probes(random, probes_per_tip);
-  queries.probes.insert(queries.probes.end(), drawn.begin(), drawn.end());
+  return draw_moisture_probes(random, probes_per_tip);
 }
 
 glm::dvec3 direction_of(const RootSystem& tree, const RootBud& bud, const RootFieldSample& sample) {
@@ -83,55 +84,59 @@ RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, R
   RootYearSummary summary;
   buds_per_query = std::max<std::size_t>(buds_per_query, 1);
 
-  // 1. Buds of every tree, and the field of the year: the roots as they all stand before any of them grows,
-  // seen in the trees' own lists (not copied).
+  // 1. Buds of every tree (each from its own streams: in parallel), and the field of the year: the roots as they
+  // all stand before any of them grows, seen in the trees' own lists (not copied).
   std::vector<std::vector<RootBud>> buds(trees.size());
+  parallel_for(trees.size(), [&](std::size_t t) { buds[t] = trees[t]->buds(year, seed); });
   RootFieldYear field;
   field.soil = &soil;
+  std::vector<std::pair<std::size_t, std::size_t>> every_bud;
   for (std::size_t t = 0; t < trees.size(); ++t) {
     const RootSystem& tree = *trees[t];
     field.segments.append(tree.segments());
-    buds[t] = tree.buds(year, seed);
-    for (const RootBud& bud : buds[t])
+    for (std::size_t b = 0; b < buds[t].size(); ++b) {
+      every_bud.emplace_back(t, b);
       field.widest_perception_radius_m =
-          std::max(field.widest_perception_radius_m, tree.parameters().of(bud.type).perception_radius_m);
+          std::max(field.widest_perception_radius_m, tree.parameters().of(buds[t][b].type).perception_radius_m);
+    }
   }
   solver.begin_year(field);
 
   // 2. The field at every bud, a chunk of buds per query, so that the queries and their probes (K per bud) never
   // exist for all buds at once. One K for the whole year: the first tree's (species may differ in everything else).
   const int probes_per_tip = trees.empty() ? 0 : trees[0]->parameters().moisture_probes;
+  const auto per_tip = static_cast<std::size_t>(probes_per_tip);
   std::vector<std::vector<glm::dvec3>> directions(trees.size());
+  for (std::size_t t = 0; t < trees.size(); ++t) directions[t].resize(buds[t].size());
   BudQueries queries;
-  auto ask = [&] {
+  for (std::size_t first = 0; first < every_bud.size(); first += buds_per_query) {
+    queries.buds = std::span(every_bud).subspan(first, std::min(buds_per_query, every_bud.size() - first));
+    queries.tips.resize(queries.buds.size());
+    queries.probes.resize(queries.buds.size() * per_tip);
+    parallel_for(queries.buds.size(), [&](std::size_t q) {
+      const auto [t, b] = queries.buds[q];
+      queries.tips[q] = query_of(*trees[t], buds[t][b], field.segments.first_of_part(t));
+      const std::vector<glm::dvec3> drawn = probes_of(*trees[t], buds[t][b], probes_per_tip, year, seed);
+      std::copy(drawn.begin(), drawn.end(), queries.probes.begin() + static_cast<std::ptrdiff_t>(q * per_tip));
+    });
     const std::vector<RootFieldSample> samples = solver.query(queries.tips, queries.probes, probes_per_tip);
-    for (std::size_t q = 0; q < samples.size(); ++q) {
+    parallel_for(samples.size(), [&](std::size_t q) {
       const auto [t, b] = queries.buds[q];
       directions[t][b] = direction_of(*trees[t], buds[t][b], samples[q]);
-    }
-    queries.clear();
-  };
-  for (std::size_t t = 0; t < trees.size(); ++t) {
-    directions[t].resize(buds[t].size());
-    for (std::size_t b = 0; b < buds[t].size(); ++b) {
-      add_query(*trees[t], buds[t][b], field.segments.first_of_part(t), probes_per_tip, year, seed, queries);
-      queries.buds.emplace_back(t, b);
-      if (queries.tips.size() == buds_per_query) ask();
-    }
+    });
   }
-  if (!queries.tips.empty()) ask();
   solver.end_year();
 
-  // 3. New segments in the composed direction V.
-  for (std::size_t t = 0; t < trees.size(); ++t) {
+  // 3. New segments in the composed direction V (each tree its own: in parallel; the soil is only read).
+  std::vector<int> removed(trees.size(), 0);
+  parallel_for(trees.size(), [&](std::size_t t) {
     RootSystem& tree = *trees[t];
-    for (std::size_t b = 0; b < buds[t].size(); ++b) {
-      tree.add_segment(buds[t][b], directions[t][b], year, soil);
-      ++summary.new_segments;
-    }
+    for (std::size_t b = 0; b < buds[t].size(); ++b) tree.add_segment(buds[t][b], directions[t][b], year, soil);
     // 4. Close the year.
-    summary.removed_segments += tree.finish_year(year);
-  }
+    removed[t] = tree.finish_year(year);
+  });
+  summary.new_segments += static_cast<int>(every_bud.size());
+  for (int r : removed) summary.removed_segments += r;
 
   // 5. Uptake, tree after tree (depletion multiplies vertex values, so the soil it leaves does not
   // depend on the order; only the split of the amount between trees sharing a voxel does).

@@ -8,7 +8,7 @@
 #include "rng/random_stream.hpp"
 #include "architecture/stem_taper.hpp"
 #include "stand/calibration.hpp"
-#include "stand/parallel_for.hpp"
+#include "core/parallel_for.hpp"
 
 namespace heliostand {
 namespace {

@@ -1,6 +1,6 @@
 #include "stand/snapshot.hpp"
 
-#include "stand/parallel_for.hpp"
+#include "core/parallel_for.hpp"
 #include "stand/trunk_mesh.hpp"
 
 namespace heliostand {

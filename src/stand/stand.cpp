@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
 #include "geometry/planting_rows.hpp"
 #include "records/stand_metrics.hpp"
 #include "stand/light_response.hpp"
@@ -26,29 +27,34 @@ Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
 
 void Stand::grow_year() {
   ++stand_age_;
-  for (auto& tree : trees_)
-    if (tree.alive()) tree.conifer.grow_year();
+  // Each crown grows from its own state and random stream: the trees are independent.
+  parallel_for(trees_.size(), [&](std::size_t i) {
+    if (trees_[i].alive()) trees_[i].conifer.grow_year();
+  });
 }
 
 std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale) {
   // Gather every living tree's leaf balls into one array (the solver sees the whole stand), remember
   // where each tree's run starts, solve once, and hand each tree its slice back.
+  std::vector<std::vector<LeafBall>> own(trees_.size());
+  parallel_for(trees_.size(), [&](std::size_t i) {
+    if (trees_[i].alive()) own[i] = trees_[i].conifer.leaf_balls();
+  });
   std::vector<LeafBall> balls;
   std::vector<std::size_t> first_ball(trees_.size() + 1, 0);
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     first_ball[i] = balls.size();
-    if (!trees_[i].alive()) continue;
-    const auto own = trees_[i].conifer.leaf_balls();
-    balls.insert(balls.end(), own.begin(), own.end());
+    balls.insert(balls.end(), own[i].begin(), own[i].end());
+    std::vector<LeafBall>().swap(own[i]);
   }
   first_ball[trees_.size()] = balls.size();
 
   const std::vector<LightSample> samples = stand_solver.solve(balls);
   // The open-grown reference: every tree alone, all in one call (first_ball delimits each tree's balls).
   const std::vector<LightSample> open_grown = open_solver.solve_each_alone(balls, first_ball);
-  for (std::size_t i = 0; i < trees_.size(); ++i) {
+  parallel_for(trees_.size(), [&](std::size_t i) {
     StandTree& tree = trees_[i];
-    if (!tree.alive()) continue;
+    if (!tree.alive()) return;
     const std::span<const LightSample> open(open_grown.data() + first_ball[i], first_ball[i + 1] - first_ball[i]);
     const std::vector<int> foliage = tree.conifer.foliage_shoot_indices();
     std::vector<ConiferTree::FoliageLight> light(foliage.size());
@@ -65,7 +71,7 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
     tree.conifer.set_foliage_light(light);
     tree.light_budget = budget;
     tree.conifer.set_light_budget(budget.absorbed, budget.absorbed_open);
-  }
+  });
   return balls.size();
 }
 
@@ -88,13 +94,15 @@ TreeEvent Stand::kill(StandTree& tree, DeathCause cause) {
 }
 
 std::vector<TreeEvent> Stand::respond_to_light(std::uint64_t seed) {
+  // Every crown responds to the light it was given, independently (its own random stream); deaths are then
+  // recorded in tree order, so the events do not depend on the number of threads.
+  std::vector<char> died(trees_.size(), 0);
+  parallel_for(trees_.size(), [&](std::size_t i) {
+    if (trees_[i].alive()) died[i] = heliostand::respond_to_light(trees_[i].conifer, seed).tree_died;
+  });
   std::vector<TreeEvent> deaths;
-  for (StandTree& tree : trees_) {
-    if (!tree.alive()) continue;
-    const LightResponseOutcome outcome = heliostand::respond_to_light(tree.conifer, seed);
-    if (outcome.tree_died)
-      deaths.push_back(kill(tree, DeathCause::light));
-  }
+  for (std::size_t i = 0; i < trees_.size(); ++i)
+    if (died[i]) deaths.push_back(kill(trees_[i], DeathCause::light));
   if (!deaths.empty()) spdlog::info("age {}: {} trees died of light", stand_age_, deaths.size());
   return deaths;
 }

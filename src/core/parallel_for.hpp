@@ -1,6 +1,7 @@
 #pragma once
-// A minimal parallel loop for independent per-tree work. Every tree draws from its own random stream,
-// so the result is the same for any number of threads.
+// A minimal parallel loop for independent per-tree work (a tree's crown growth, its light response, its roots'
+// buds). Every tree draws from its own random stream and writes only its own state, so the result is the same
+// for any number of threads; `set_worker_threads(1)` runs the loop in order on the calling thread.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -11,10 +12,15 @@
 
 namespace heliostand {
 
+// The threads parallel_for uses: what `set_worker_threads` chose, else the hardware's (at least 1).
+unsigned worker_threads();
+// 0 goes back to the hardware's count. Process-wide: `heliostand grow --threads N` and the tests that prove the
+// answers do not depend on it.
+void set_worker_threads(unsigned threads);
+
 template <typename Body>
 void parallel_for(std::size_t count, Body body) {
-  const std::size_t workers =
-      std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  const std::size_t workers = std::min<std::size_t>(count, worker_threads());
   if (workers <= 1) {
     for (std::size_t i = 0; i < count; ++i) body(i);
     return;
