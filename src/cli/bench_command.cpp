@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "compute/device_choice.hpp"
 #include "light/light_benchmark.hpp"
+#include "run/established_canopy.hpp"
 #include "run/stand_benchmark.hpp"
 
 namespace heliostand::cli {
@@ -54,30 +55,53 @@ void add_bench_stand_command(CLI::App& bench) {
   });
 }
 
-}  // namespace
+// The command-line light flags that were given replace the stand's own [light] values; the others leave them.
+struct LightOverrides {
+  CLI::Option* cutoff = nullptr;
+  CLI::Option* far_field_cell = nullptr;
+  CLI::Option* periodic = nullptr;
+  CLI::Option* bias_correction = nullptr;
 
-void add_bench_command(CLI::App& app) {
-  auto* bench = app.add_subcommand("bench", "Benchmarks (timings and accuracy, printed as JSON)");
-  bench->require_subcommand(1);
-  add_bench_stand_command(*bench);
+  void apply(const LightParameters& given, LightParameters& stand) const {
+    if (cutoff->count() > 0) stand.cutoff_m = given.cutoff_m;
+    if (far_field_cell->count() > 0) stand.far_field_cell_m = given.far_field_cell_m;
+    if (periodic->count() > 0) stand.periodic = given.periodic;
+    if (bias_correction->count() > 0) stand.far_field_bias_correction = given.far_field_bias_correction;
+  }
+};
+
+// `heliostand bench light [--balls N ...] [--stand SCENARIO ...]` (light/light_benchmark.hpp).
+void add_bench_light_command(CLI::App& bench) {
   auto options = std::make_shared<LightBenchmarkOptions>();
+  auto scenarios = std::make_shared<std::vector<std::string>>();
   auto output = std::make_shared<std::string>();
-  auto* light = bench->add_subcommand("light", "Light solvers side by side on synthetic conifer canopies");
-  light->add_option("--balls", options->ball_counts, "Stand sizes in leaf balls (repeatable)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  auto overrides = std::make_shared<LightOverrides>();
+  auto* light = bench.add_subcommand("light", "Light solvers side by side on synthetic conifer canopies and on real stands");
+  auto* balls = light->add_option("--balls", options->ball_counts,
+                                  "Synthetic stand sizes in leaf balls (repeatable; default 1000, 10000 and 100000 "
+                                  "unless --stand is given)")
+                    ->check(CLI::PositiveNumber);
+  light->add_option("--stand", *scenarios,
+                    "A scenario whose stand is established as `grow` establishes it (year 0, no growth) and lit with "
+                    "its own [light] parameters (repeatable; combines with --balls)");
   light->add_option("--seed", options->seed, "Seed of the synthetic canopies")->capture_default_str();
   light->add_option("--device", options->opencl_device, "OpenCL device for the OpenCL rows: opencl, opencl:N or none")
       ->capture_default_str();
-  light->add_option("--cutoff", options->parameters.cutoff_m, "Near-field cut-off, m")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  light->add_option("--far-field-cell", options->parameters.far_field_cell_m, "Far-field voxel edge, m")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  light->add_flag("--periodic", options->parameters.periodic, "Treat the plot as a torus");
-  light->add_flag("--far-field-bias-correction", options->parameters.far_field_bias_correction,
-                  "Correct the far field's dark bias (off by default, as in [light]: docs/light.md)");
+  const char* overrides_stand = " (synthetic stands; for a --stand, only when given: else its scenario's value)";
+  overrides->cutoff = light->add_option("--cutoff", options->parameters.cutoff_m,
+                                        std::string("Near-field cut-off, m") + overrides_stand)
+                          ->check(CLI::PositiveNumber)
+                          ->capture_default_str();
+  overrides->far_field_cell = light->add_option("--far-field-cell", options->parameters.far_field_cell_m,
+                                                std::string("Far-field voxel edge, m") + overrides_stand)
+                                  ->check(CLI::PositiveNumber)
+                                  ->capture_default_str();
+  overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
+                                        std::string("Treat the plot as a torus") + overrides_stand);
+  overrides->bias_correction =
+      light->add_flag("--far-field-bias-correction", options->parameters.far_field_bias_correction,
+                      std::string("Correct the far field's dark bias (off by default, as in [light]: docs/light.md)") +
+                          overrides_stand);
   light->add_option("--reference-exact-max", options->reference_exact_max,
                     "Largest stand solved whole by reference exact (above: subsample)")
       ->capture_default_str();
@@ -91,11 +115,27 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
-  light->callback([options, output] {
+  light->callback([options, scenarios, output, overrides, balls] {
     // stdout carries the JSON: progress lines go to stderr (logs always go to stderr)
     if (!spdlog::get("heliostand-bench")) spdlog::set_default_logger(spdlog::stderr_color_mt("heliostand-bench"));
-    print_json(run_light_benchmark(*options), *output);
+    if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
+    // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
+    std::vector<LightBenchmarkStand> stands;
+    for (const auto& scenario : *scenarios) {
+      stands.push_back(established_canopy(scenario));
+      overrides->apply(options->parameters, stands.back().parameters);
+    }
+    print_json(run_light_benchmark(*options, stands), *output);
   });
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto* bench = app.add_subcommand("bench", "Benchmarks (timings and accuracy, printed as JSON)");
+  bench->require_subcommand(1);
+  add_bench_stand_command(*bench);
+  add_bench_light_command(*bench);
 }
 
 }  // namespace heliostand::cli

@@ -3,7 +3,8 @@
 
 namespace heliostand::cli {
 
-// `heliostand bench light [--balls N ...]`: solver timings and errors on synthetic canopies, as JSON.
+// `heliostand bench stand SCENARIO`: a grown scenario's cost; `heliostand bench light [--balls N ...] [--stand SCENARIO ...]`:
+// light solver timings and errors on synthetic canopies and on established stands. Both print JSON.
 void add_bench_command(CLI::App& app);
 
 }  // namespace heliostand::cli

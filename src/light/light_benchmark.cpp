@@ -112,23 +112,41 @@ std::string ratio(const Run& slow, const Run& fast) {
   return fmt::format("{:.4g}", slow.seconds / fast.seconds);
 }
 
-std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_count) {
-  const SyntheticCanopy canopy = make_synthetic_canopy(ball_count, options.seed);
-  const auto& balls = canopy.balls;
+// `text` as a JSON string (a stand's name is a path: quotes, backslashes and control characters escaped).
+std::string json_string(const std::string& text) {
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') quoted += {'\\', c};
+    else if (static_cast<unsigned char>(c) < 0x20) quoted += fmt::format("\\u{:04x}", int(c));
+    else quoted += c;
+  }
+  return quoted + "\"";
+}
+
+const char* sky_name(LightParameters::Sky sky) {
+  return sky == LightParameters::Sky::kanamaru ? "kanamaru" : "overcast";
+}
+
+std::string parameters_json(const LightParameters& p) {
+  return fmt::format(R"({{"sky": "{}", "sky_scale": {}, "sky_bands": {}, "sky_sectors": {}, "transmittance": {}, )"
+                     R"("intensity_ratio": {}, "cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, )"
+                     R"("periodic": {}}})",
+                     sky_name(p.sky), p.sky_scale, p.sky_bands, p.sky_sectors, p.transmittance, p.intensity_ratio,
+                     p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.periodic ? "true" : "false");
+}
+
+// The four solvers on one canopy -- the culled ones with `parameters`, the exact ones with the same but exact --
+// as the fields of its row from "opencl_device" on.
+std::string solver_rows(const LightBenchmarkOptions& options, const std::vector<LeafBall>& balls,
+                        const LightParameters& parameters) {
   std::vector<std::uint32_t> subsample;
   const std::size_t k_count = std::min(options.subsample, balls.size());
   for (std::size_t k = 0; k < k_count; ++k) subsample.push_back(static_cast<std::uint32_t>(k * balls.size() / k_count));
 
-  LightParameters culled = options.parameters;
+  LightParameters culled = parameters;
   culled.exact = false;
   LightParameters exact = culled;
   exact.exact = true;
-  if (culled.periodic) {
-    for (auto* p : {&culled, &exact}) {
-      p->plot_x_min = p->plot_y_min = 0;
-      p->plot_x_max = p->plot_y_max = canopy.plot_size_m;
-    }
-  }
 
   const auto reference = compute::ComputeBackend::reference();
   auto reference_exact_solver = make_light_solver(reference, exact);
@@ -144,11 +162,11 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
     device = culled_solver->name();
     (void)culled_solver->solve(std::span(balls).first(std::min<std::size_t>(balls.size(), 64)));  // warm-up
     opencl_exact = time_solver("opencl exact", *exact_solver, balls, subsample, options.opencl_exact_max);
-    opencl_culled = time_solver("opencl culled+far-field", *culled_solver, balls, subsample, ball_count);
+    opencl_culled = time_solver("opencl culled+far-field", *culled_solver, balls, subsample, balls.size());
   }
   const bool whole = balls.size() <= options.reference_exact_max;
   return fmt::format(
-      R"(    {{"balls": {}, "trees": {}, "plot_m": {:.4g}, "opencl_device": "{}",)"
+      R"("opencl_device": "{}",)"
       "\n"
       R"(     "build_seconds": {:.6g}, "mean_candidates": {:.6g}, "mean_tile_candidates": {:.6g},)"
       "\n"
@@ -164,8 +182,7 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
       "\n"
       R"(     "speedup": {{"opencl_exact_over_reference_exact": {}, "opencl_culled_over_opencl_exact": {}, )"
       R"("opencl_culled_over_reference_exact": {}, "reference_culled_over_reference_exact": {}}}}})",
-      balls.size(), canopy.tree_count, canopy.plot_size_m, device,
-      opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds,
+      device, opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds,
       reference_culled.mean_candidates, reference_culled.mean_tile_candidates,
       whole ? balls.size() : subsample.size(), whole ? "true" : "false",
       run_json(reference_exact, reference_exact), run_json(reference_culled, reference_exact),
@@ -174,29 +191,51 @@ std::string one_stand(const LightBenchmarkOptions& options, std::size_t ball_cou
       ratio(reference_exact, reference_culled));
 }
 
+std::string synthetic_row(const LightBenchmarkOptions& options, std::size_t ball_count) {
+  const SyntheticCanopy canopy = make_synthetic_canopy(ball_count, options.seed);
+  LightParameters parameters = options.parameters;
+  parameters.plot_x_min = parameters.plot_y_min = 0;
+  parameters.plot_x_max = parameters.plot_y_max = canopy.plot_size_m;
+  return fmt::format(R"(    {{"balls": {}, "trees": {}, "plot_m": {:.4g}, )", canopy.balls.size(), canopy.tree_count,
+                     canopy.plot_size_m) +
+         solver_rows(options, canopy.balls, parameters);
+}
+
+// A real stand's row: the synthetic rows' fields, plus the stand's name, plot and own light parameters.
+std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmarkStand& stand) {
+  const LightParameters& p = stand.parameters;
+  const double width = p.plot_x_max - p.plot_x_min, depth = p.plot_y_max - p.plot_y_min;
+  return fmt::format(R"(    {{"stand": {}, "balls": {}, "trees": {}, "plot_m": {}, )"
+                     R"("plot_bounds_m": [{:.6g}, {:.6g}, {:.6g}, {:.6g}],)"
+                     "\n"
+                     R"(     "parameters": {},)"
+                     "\n     ",
+                     json_string(stand.name), stand.balls.size(), stand.tree_count,
+                     width == depth ? fmt::format("{:.4g}", width) : "null", p.plot_x_min, p.plot_y_min,
+                     p.plot_x_max, p.plot_y_max, parameters_json(p)) +
+         solver_rows(options, stand.balls, p);
+}
+
 }  // namespace
 
-std::string run_light_benchmark(const LightBenchmarkOptions& options) {
-  const auto& p = options.parameters;
+std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {
   std::string text = fmt::format(
       R"({{"benchmark": "light", "seed": {}, "hardware_threads": {},)"
       "\n"
-      R"( "parameters": {{"sky_bands": {}, "sky_sectors": {}, "transmittance": {}, "intensity_ratio": {}, )"
-      R"("cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, "periodic": {}}},)"
+      R"( "parameters": {},)"
       "\n"
       R"( "limits": {{"reference_exact_max": {}, "reference_culled_max": {}, "opencl_exact_max": {}, "subsample": {}}},)"
       "\n"
-      R"( "note": "above a solver's limit its time is extrapolated from an evenly spaced subsample of balls (setup + per-ball time x N / subsample); errors are measured on that subsample against reference exact",)"
+      R"( "note": "above a solver's limit its time is extrapolated from an evenly spaced subsample of balls (setup + per-ball time x N / subsample); errors are measured on that subsample against reference exact; the synthetic stands use these parameters, a real stand (\"stand\") its own",)"
       "\n"
       R"( "stands": [)"
       "\n",
-      options.seed, std::thread::hardware_concurrency(), p.sky_bands, p.sky_sectors, p.transmittance,
-      p.intensity_ratio, p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.periodic ? "true" : "false",
+      options.seed, std::thread::hardware_concurrency(), parameters_json(options.parameters),
       options.reference_exact_max, options.reference_culled_max, options.opencl_exact_max, options.subsample);
-  for (std::size_t k = 0; k < options.ball_counts.size(); ++k) {
-    text += one_stand(options, options.ball_counts[k]);
-    text += k + 1 < options.ball_counts.size() ? ",\n" : "\n";
-  }
+  std::vector<std::string> rows;
+  for (std::size_t ball_count : options.ball_counts) rows.push_back(synthetic_row(options, ball_count));
+  for (const LightBenchmarkStand& stand : stands) rows.push_back(stand_row(options, stand));
+  for (std::size_t k = 0; k < rows.size(); ++k) text += rows[k] + (k + 1 < rows.size() ? ",\n" : "\n");
   return text + " ]}\n";
 }
 

@@ -1,10 +1,12 @@
 #pragma once
-// `heliostand bench light`: times the light solvers side by side on reproducible synthetic canopies and
-// measures each one's error against the reference exact solution. Results are JSON (docs/performance.md).
+// `heliostand bench light`: times the light solvers side by side on reproducible synthetic canopies, and on real
+// stands' canopies handed in by the caller, and measures each one's error against the reference exact solution.
+// Results are JSON (docs/performance.md).
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "light/leaf_ball.hpp"
 #include "light/light_parameters.hpp"
 
 namespace heliostand {
@@ -22,7 +24,17 @@ struct LightBenchmarkOptions {
   std::size_t subsample = 400;            // balls in the subsample (also where errors are measured)
 };
 
-// Runs the benchmark and returns the JSON report; progress goes to spdlog (stderr).
-std::string run_light_benchmark(const LightBenchmarkOptions& options);
+// A real stand's canopy as the light solver sees it. The light module does not know stands: the caller
+// (run/established_canopy.hpp) establishes one and hands over its leaf balls and its light parameters.
+struct LightBenchmarkStand {
+  std::string name;              // what the JSON row calls it (the scenario file)
+  std::vector<LeafBall> balls;   // every living tree's leaf balls
+  std::size_t tree_count = 0;    // the living trees they belong to
+  LightParameters parameters;    // the stand's own (its [light], the plot as the periodic domain)
+};
+
+// Runs the benchmark on the synthetic canopies of `options.ball_counts` (with `options.parameters`), then on each
+// of `stands` (with its own parameters), and returns the JSON report; progress goes to spdlog (stderr).
+std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands = {});
 
 }  // namespace heliostand

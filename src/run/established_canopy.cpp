@@ -1,0 +1,37 @@
+#include "run/established_canopy.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "scenario/scenario.hpp"
+#include "stand/establishment.hpp"
+
+namespace heliostand {
+
+LightBenchmarkStand established_canopy(const std::filesystem::path& scenario_file) {
+  const Scenario scenario = load_scenario(scenario_file);
+  for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+  EstablishmentReport report;
+  const std::vector<StandTree> trees = establish_stand(scenario, report);
+  spdlog::info("bench light: {} established, {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",
+               scenario_file.string(), trees.size(), scenario.stand.age_at_survey_years, report.fitted,
+               report.crown_base_off, report.unusable);
+
+  LightBenchmarkStand stand;
+  stand.name = scenario_file.string();
+  for (const StandTree& tree : trees) {
+    if (!tree.alive()) continue;
+    const std::vector<LeafBall> balls = tree.conifer.leaf_balls();
+    stand.balls.insert(stand.balls.end(), balls.begin(), balls.end());
+    ++stand.tree_count;
+  }
+  // As the run's stand solver: the scenario's [light] over the surveyed plot (periodic edges wrap that plot).
+  stand.parameters = scenario.light;
+  const PlotBounds& plot = scenario.stand.plot;
+  stand.parameters.plot_x_min = plot.x_min;
+  stand.parameters.plot_y_min = plot.y_min;
+  stand.parameters.plot_x_max = plot.x_max;
+  stand.parameters.plot_y_max = plot.y_max;
+  return stand;
+}
+
+}  // namespace heliostand

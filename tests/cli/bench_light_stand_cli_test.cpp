@@ -1,0 +1,145 @@
+// `heliostand bench light --stand SCENARIO` as a user runs it: a real stand's leaf balls, established as `grow`
+// establishes them, lit by the four solvers with the scenario's own [light]; the command-line light flags replace
+// the scenario's values only when given; a bad scenario is refused before any JSON is written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_runner.hpp"
+#include "compute/device_choice.hpp"
+#include "scenario/scenario.hpp"
+#include "stand/establishment.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The eight trees of stands/tiny at age 20 with a coarse 8 x 16 sky (validation/bench/stands/tiny.toml).
+const fs::path tiny = source_path("validation/bench/stands/tiny.toml");
+
+struct Bench {
+  CliResult cli;
+  nlohmann::json json;
+};
+
+Bench bench_light(const fs::path& folder, const std::string& arguments) {
+  fs::create_directories(folder);
+  const fs::path json = folder / "light.json";
+  Bench bench;
+  bench.cli = run_cli("bench light " + arguments + " -o " + json.string() + " -q");
+  if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
+  return bench;
+}
+
+// The leaf balls of the stand `grow` starts from: establish_stand's trees, counted here without the command.
+std::size_t established_leaf_balls(const fs::path& scenario_file) {
+  EstablishmentReport report;
+  std::size_t balls = 0;
+  for (const StandTree& tree : establish_stand(load_scenario(scenario_file), report))
+    if (tree.alive()) balls += tree.conifer.leaf_balls().size();
+  return balls;
+}
+
+double mean_abs_error(const nlohmann::json& row, const char* solver) {
+  return row.at(solver).at("error_vs_reference_exact").at("mean_abs_light").get<double>();
+}
+
+// The trees of stands/tiny on its 10 m plot with a coarse sky and the given [light] lines after it (from line 9 on).
+fs::path tiny_scenario(const fs::path& file, const std::string& light_lines) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string()
+                      << "\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
+                         "[run]\nyears = 1\n[light]\nsky_bands = 8\nsky_sectors = 16\n"
+                      << light_lines;
+  return file;
+}
+
+// Only the reference solvers on a few balls: enough to see the parameters a row used.
+const std::string parameters_only = " --device none --reference-exact-max 0 --reference-culled-max 0 --subsample 4";
+
+}  // namespace
+
+// The stand's row holds every leaf ball of the established stand, and the solvers agree as they do on synthetic
+// canopies: OpenCL exact is the reference's answer; culled + far field (the default solver) is within the goal of
+// issue 16, mean |Δlight| ≤ 0.01, on this small stand whose far field is a few metres of neighbours.
+TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
+  const bool opencl = compute::opencl_device_exists();
+  const Bench bench = bench_light(scratch_folder("bench-light-stand"),
+                                  "--stand " + tiny.string() + " --device " + (opencl ? "opencl" : "none"));
+  ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
+  const auto& stands = bench.json.at("stands");
+  ASSERT_EQ(stands.size(), 1u) << "--stand alone runs no synthetic stand";
+  const auto& row = stands.at(0);
+  EXPECT_EQ(row.at("stand"), tiny.string());
+  EXPECT_EQ(row.at("trees"), 8);
+  EXPECT_EQ(row.at("balls").get<std::size_t>(), established_leaf_balls(tiny));
+  EXPECT_EQ(row.at("plot_m"), 10.0);
+  EXPECT_EQ(row.at("parameters").at("sky_bands"), 8) << "the scenario's [light]";
+  EXPECT_EQ(row.at("parameters").at("sky"), "overcast") << "a stand's sky unless [light] says otherwise";
+  EXPECT_EQ(row.at("error_measured_on").at("whole_stand"), true) << "below --reference-exact-max: every ball";
+  EXPECT_EQ(row.at("error_measured_on").at("balls"), row.at("balls"));
+  EXPECT_LT(mean_abs_error(row, "reference_culled"), 0.01) << bench.json.dump(1);
+  if (!opencl) GTEST_SKIP() << "no OpenCL device: the OpenCL rows were not run";
+  EXPECT_LT(mean_abs_error(row, "opencl_exact"), 1e-5) << bench.json.dump(1);
+  EXPECT_LT(mean_abs_error(row, "opencl_culled_far_field"), 0.01) << bench.json.dump(1);
+  // The two culled solvers read the same candidate lists and far-field table: the same answers to float precision.
+  const auto& opencl_culled = row.at("opencl_culled_far_field").at("error_vs_reference_exact");
+  const auto& reference_culled = row.at("reference_culled").at("error_vs_reference_exact");
+  EXPECT_NEAR(opencl_culled.at("mean_light_bias").get<double>(), reference_culled.at("mean_light_bias").get<double>(), 1e-5);
+  EXPECT_NEAR(opencl_culled.at("mean_angle_degrees").get<double>(), reference_culled.at("mean_angle_degrees").get<double>(), 0.01);
+}
+
+// A light flag given on the command line replaces the scenario's value; one not given leaves it. The synthetic
+// stands (--balls, combined with --stand) keep the command's own values.
+TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
+  const fs::path folder = scratch_folder("bench-light-stand-flags");
+  // its own cut-off, 3 m, not the command's default 4 m: which value a row used shows
+  const fs::path scenario = tiny_scenario(folder / "scenario.toml", "cutoff_m = 3.0\n");
+
+  const Bench own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
+  ASSERT_EQ(own.cli.status, 0) << own.cli.output;
+  const auto& own_parameters = own.json.at("stands").at(0).at("parameters");
+  EXPECT_EQ(own_parameters.at("cutoff_m"), 3.0) << "no --cutoff: the scenario's";
+  EXPECT_EQ(own_parameters.at("far_field_bias_correction"), false);
+  EXPECT_EQ(own_parameters.at("periodic"), false);
+
+  const Bench given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
+                                                        " --cutoff 2 --far-field-bias-correction --periodic" +
+                                                        parameters_only);
+  ASSERT_EQ(given.cli.status, 0) << given.cli.output;
+  const auto& stands = given.json.at("stands");
+  ASSERT_EQ(stands.size(), 2u) << "one synthetic stand, then the scenario's";
+  EXPECT_FALSE(stands.at(0).contains("stand"));
+  EXPECT_EQ(stands.at(0).at("balls"), 200);
+  const auto& given_parameters = stands.at(1).at("parameters");
+  EXPECT_EQ(given_parameters.at("cutoff_m"), 2.0) << "--cutoff 2 replaces the scenario's 3 m";
+  EXPECT_EQ(given_parameters.at("far_field_bias_correction"), true);
+  EXPECT_EQ(given_parameters.at("periodic"), true);
+  EXPECT_EQ(given_parameters.at("far_field_cell_m"), 1.0) << "not given: the scenario's (the default)";
+  EXPECT_EQ(given_parameters.at("sky_bands"), 8) << "not a flag: always the scenario's";
+  EXPECT_EQ(given.json.at("parameters").at("cutoff_m"), 2.0) << "the synthetic stands' parameters";
+}
+
+// A missing or bad scenario: the scenario reader's message (file, line, key, reason), exit 2, and no JSON at all,
+// not even for the synthetic stands asked for beside it.
+TEST(BenchLightStandCli, BadScenarioIsRefusedBeforeAnyJson) {
+  const fs::path folder = scratch_folder("bench-light-stand-bad");
+  const fs::path missing = folder / "no_such_scenario.toml";
+  const fs::path json = folder / "light.json";
+  const CliResult absent = run_cli("bench light --stand " + missing.string() + " -o " + json.string());
+  EXPECT_EQ(absent.status, 2) << absent.output;
+  EXPECT_NE(absent.output.find(missing.string()), std::string::npos) << absent.output;
+  EXPECT_FALSE(fs::exists(json)) << "no JSON file";
+
+  const fs::path bad = tiny_scenario(folder / "bad.toml", "cutoff_m = -1.0\n");
+  const CliResult refused =
+      run_cli("bench light --balls 200 --stand " + bad.string() + parameters_only + " -o " + json.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find(bad.string() + ":13"), std::string::npos) << "file and line: " << refused.output;
+  EXPECT_NE(refused.output.find("key 'light.cutoff_m'"), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
+  EXPECT_FALSE(fs::exists(json)) << "no JSON file";
+}
+
+}  // namespace heliostand::testing
