@@ -24,13 +24,7 @@ LightBenchmarkStand established_canopy(const std::filesystem::path& scenario_fil
     stand.balls.insert(stand.balls.end(), balls.begin(), balls.end());
     ++stand.tree_count;
   }
-  // As the run's stand solver: the scenario's [light] over the surveyed plot (periodic edges wrap that plot).
-  stand.parameters = scenario.light;
-  const PlotBounds& plot = scenario.stand.plot;
-  stand.parameters.plot_x_min = plot.x_min;
-  stand.parameters.plot_y_min = plot.y_min;
-  stand.parameters.plot_x_max = plot.x_max;
-  stand.parameters.plot_y_max = plot.y_max;
+  stand.parameters = scenario.stand_light();  // as the run's stand solver sees it
   return stand;
 }
 

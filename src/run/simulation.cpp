@@ -37,19 +37,10 @@ std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
   return events;
 }
 
-LightParameters light_for(const Scenario& scenario) {
-  LightParameters light = scenario.light;
-  light.plot_x_min = scenario.stand.plot.x_min;
-  light.plot_y_min = scenario.stand.plot.y_min;
-  light.plot_x_max = scenario.stand.plot.x_max;
-  light.plot_y_max = scenario.stand.plot.y_max;
-  return light;
-}
-
 // Competitors are counted across periodic edges when light is (the plot a tile of a larger plantation), over the
 // domain the light solver wraps.
 CompetitionNeighbourhood competition_for(const Scenario& scenario) {
-  const LightParameters light = light_for(scenario);
+  const LightParameters light = scenario.stand_light();
   return {scenario.competition.hegyi_radius_m,
           StandEdges{light.periodic, PlotBounds{light.plot_x_min, light.plot_y_min, light.plot_x_max, light.plot_y_max}}};
 }
@@ -101,11 +92,11 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const auto backend = compute::ComputeBackend::open(
       options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
   spdlog::info("compute backend (light and roots): {}", backend.name());
-  auto solver = make_light_solver(backend, light_for(scenario));
+  auto solver = make_light_solver(backend, scenario.stand_light());
   // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
   // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
   // edges; and it sees the reference sky (sky_scale 1), so a dimmer stand sky lowers every relative light.
-  LightParameters open_grown = light_for(scenario);
+  LightParameters open_grown = scenario.stand_light();
   open_grown.exact = true;
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
