@@ -54,15 +54,17 @@ struct Scenario {
   double plot_area_ha() const { return stand.plot.area_ha(); }
   int final_age_years() const { return stand.age_at_survey_years + run.years; }
   const SpeciesParameters& species_of(const SurveyRecord& tree) const { return species.at(tree.species); }
-  // The stand solver's light: [light] over the surveyed plot (periodic edges wrap that plot; the [light] plot keys
-  // are replaced by it).
+  // The stand solver's light: [light] with its periodic domain, which the reader sets to the surveyed plot unless
+  // [light] gives plot_x_min .. plot_y_max. A scenario built in code without a domain gets the plot.
   LightParameters stand_light() const {
-    LightParameters over_plot = light;
-    over_plot.plot_x_min = stand.plot.x_min;
-    over_plot.plot_y_min = stand.plot.y_min;
-    over_plot.plot_x_max = stand.plot.x_max;
-    over_plot.plot_y_max = stand.plot.y_max;
-    return over_plot;
+    LightParameters resolved = light;
+    if (resolved.plot_x_max <= resolved.plot_x_min || resolved.plot_y_max <= resolved.plot_y_min) {
+      resolved.plot_x_min = stand.plot.x_min;
+      resolved.plot_y_min = stand.plot.y_min;
+      resolved.plot_x_max = stand.plot.x_max;
+      resolved.plot_y_max = stand.plot.y_max;
+    }
+    return resolved;
   }
 
   // Command-line overrides (--years, --seed). A shorter run must still contain every thinning: otherwise

@@ -43,6 +43,27 @@ TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   EXPECT_EQ(s.species_of(s.survey.trees[0]).name, "todomatsu");
 }
 
+// The periodic light domain: the plot unless [light] gives its own, and what the stand solver is handed
+// (Scenario::stand_light) is that domain: a [light] domain used to be replaced by the plot without a word.
+TEST(LoadScenario, StandLightWrapsTheLightDomain) {
+  const Scenario plain = load_scenario(write_scenario("light-domain-plot", minimal_stand + "[light]\nperiodic = true\n"));
+  EXPECT_DOUBLE_EQ(plain.stand_light().plot_x_min, plain.stand.plot.x_min);
+  EXPECT_DOUBLE_EQ(plain.stand_light().plot_x_max, plain.stand.plot.x_max);
+  EXPECT_DOUBLE_EQ(plain.stand_light().plot_y_max, plain.stand.plot.y_max);
+  const Scenario own = load_scenario(write_scenario(
+      "light-domain-own", minimal_stand + "[light]\nperiodic = true\nplot_x_min = -5\nplot_y_min = -2\n"
+                                          "plot_x_max = 15\nplot_y_max = 12\n"));
+  const LightParameters light = own.stand_light();
+  EXPECT_DOUBLE_EQ(light.plot_x_min, -5);
+  EXPECT_DOUBLE_EQ(light.plot_y_min, -2);
+  EXPECT_DOUBLE_EQ(light.plot_x_max, 15);
+  EXPECT_DOUBLE_EQ(light.plot_y_max, 12);
+  // A scenario built in code, with no domain, gets the plot.
+  Scenario in_code = own;
+  in_code.light.plot_x_min = in_code.light.plot_x_max = 0;
+  EXPECT_DOUBLE_EQ(in_code.stand_light().plot_x_max, own.stand.plot.x_max);
+}
+
 TEST(LoadScenario, RunSpeciesAndLightOverrides) {
   const auto file = write_scenario("overrides", minimal_stand +
                                                     "seed = 42\n"
