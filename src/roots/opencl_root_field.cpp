@@ -81,10 +81,7 @@ std::string OpenCLRootFieldSolver::name() const { return "opencl:" + state_->cl.
 void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   State& s = *state_;
   const SegmentList& segments = year.segments;
-  const double longest_half = segments.longest_half_m();
-  // Cells half the widest reach: a query visits at most 5³ cells and skips those wholly outside its reach,
-  // which hugs the sphere more tightly than 3³ cells of a whole reach.
-  s.grid = SegmentGrid::build(segments, 0.5 * (year.widest_perception_radius_m + longest_half));
+  s.grid = SegmentGrid::build(segments, year.widest_perception_radius_m);
   // One frame origin for everything on the device keeps float positions small (sub-micrometre over 100 m).
   s.frame = year.soil != nullptr ? year.soil->min_corner() : s.grid.origin;
 

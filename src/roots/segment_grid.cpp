@@ -8,7 +8,7 @@
 
 namespace heliostand::roots {
 
-SegmentGrid SegmentGrid::build(const SegmentList& segments, double min_cell_size_m, std::size_t max_cells) {
+SegmentGrid SegmentGrid::build(const SegmentList& segments, double widest_perception_radius_m, std::size_t max_cells) {
   SegmentGrid grid;
   glm::dvec3 low(0.0), high(0.0);
   segments.for_each([&](std::size_t s, const glm::dvec3& start, const glm::dvec3& end) {
@@ -18,7 +18,7 @@ SegmentGrid SegmentGrid::build(const SegmentList& segments, double min_cell_size
   });
   grid.longest_half_m = segments.longest_half_m();
   grid.origin = low;
-  grid.cell_size_m = std::max(min_cell_size_m, 1e-6);
+  grid.cell_size_m = std::max(0.5 * (widest_perception_radius_m + grid.longest_half_m), 1e-6);
   auto dims_for = [&](double cell) { return glm::max(glm::ivec3(glm::floor((high - low) / cell)) + 1, glm::ivec3(1)); };
   grid.dims = dims_for(grid.cell_size_m);
   while (static_cast<std::size_t>(grid.dims.x) * grid.dims.y * grid.dims.z > max_cells) {

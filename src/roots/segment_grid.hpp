@@ -17,8 +17,10 @@ struct SegmentGrid {
   std::vector<int> cell_start;     // size cells + 1
   std::vector<int> cell_segments;  // segment indices, grouped by cell
 
-  // `min_cell_size_m` is raised when the grid would exceed `max_cells`.
-  static SegmentGrid build(const SegmentList& segments, double min_cell_size_m,
+  // Cells half the widest reach of a query (`widest_perception_radius_m` + the longest segment's half): a query
+  // visits at most 5³ cells and skips those wholly outside its reach, which hugs the sphere more tightly than 3³
+  // cells of a whole reach. The cells are made coarser when the grid would exceed `max_cells`.
+  static SegmentGrid build(const SegmentList& segments, double widest_perception_radius_m,
                            std::size_t max_cells = std::size_t{1} << 22);
   glm::ivec3 cell_of(const glm::dvec3& point) const;  // clamped into the grid
   std::size_t cell_index(const glm::ivec3& cell) const;
