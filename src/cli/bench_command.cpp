@@ -99,8 +99,10 @@ void add_bench_light_command(CLI::App& bench) {
   overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
                                         std::string("Treat the plot as a torus") + overrides_stand);
   overrides->bias_correction =
-      light->add_flag("--far-field-bias-correction", options->parameters.far_field_bias_correction,
-                      std::string("Correct the far field's dark bias (off by default, as in [light]: docs/light.md)") +
+      light->add_flag("--far-field-bias-correction,!--no-far-field-bias-correction",
+                      options->parameters.far_field_bias_correction,
+                      std::string("Correct the far field's dark bias, or not (on by default, as in [light]: "
+                                  "docs/light.md)") +
                           overrides_stand);
   light->add_option("--reference-exact-max", options->reference_exact_max,
                     "Largest stand solved whole by reference exact (above: subsample)")

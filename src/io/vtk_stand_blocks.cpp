@@ -98,14 +98,18 @@ vtkSmartPointer<vtkPolyData> build_leaf_balls_block(const StandSnapshot& snapsho
   points->Allocate(ball_count);
   auto radius = named_array<vtkDoubleArray>("radius", ball_count);
   auto light = named_array<vtkDoubleArray>("light", ball_count);
+  auto relative_light = named_array<vtkDoubleArray>("relative_light", ball_count);
   auto tree_id = named_array<vtkIntArray>("tree_id", ball_count);
 
+  constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
   for (const TreeSnapshot& tree : snapshot.trees) {
     const bool has_light = tree.leaf_ball_light.size() == tree.leaf_balls.size();
+    const bool has_relative = tree.leaf_ball_relative_light.size() == tree.leaf_balls.size();
     for (std::size_t i = 0; i < tree.leaf_balls.size(); ++i) {
       add_point(*points, tree.leaf_balls[i].centre);
       radius->InsertNextValue(tree.leaf_balls[i].radius);
-      light->InsertNextValue(has_light ? tree.leaf_ball_light[i] : std::numeric_limits<double>::quiet_NaN());
+      light->InsertNextValue(has_light ? tree.leaf_ball_light[i] : unknown);
+      relative_light->InsertNextValue(has_relative ? tree.leaf_ball_relative_light[i] : unknown);
       tree_id->InsertNextValue(tree.id);
     }
   }
@@ -115,6 +119,7 @@ vtkSmartPointer<vtkPolyData> build_leaf_balls_block(const StandSnapshot& snapsho
   block->SetVerts(one_vertex_per_point(ball_count));
   block->GetPointData()->AddArray(radius);
   block->GetPointData()->AddArray(light);
+  block->GetPointData()->AddArray(relative_light);
   block->GetPointData()->AddArray(tree_id);
   return block;
 }

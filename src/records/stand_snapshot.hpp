@@ -50,7 +50,10 @@ struct TreeSnapshot {
   // year would cost more than writing them): it must stay valid while the snapshot is being written.
   std::span<const Shoot> shoots;
   std::vector<LeafBall> leaf_balls;
-  std::vector<double> leaf_ball_light;  // one per leaf ball (same order), relative light 0..1; may be empty
+  std::vector<double> leaf_ball_light;  // one per leaf ball (same order), light 0..1 of the open sky; may be empty
+  // One per leaf ball (same order): its light in the stand / its light with its tree alone, 0..1, the value the
+  // shoot rules read (death threshold, elongation response); may be empty.
+  std::vector<double> leaf_ball_relative_light;
   std::vector<int> leaf_ball_shoot;     // one per leaf ball (same order): its shoot's index in `shoots`; may be empty
   // A tree gone (dead or removed) since the previous output year is written once more, with the crown it had
   // when it went, so the year's VTK shows the stand before the thinning too (a Threshold on status shows it

@@ -29,7 +29,10 @@ TreeSnapshot snapshot_of(const StandTree& stand_tree) {
   snapshot.hollow_count = static_cast<int>(stand_tree.hollows.size());
   if (stand_tree.alive()) {
     snapshot.leaf_balls = tree.leaf_balls();
-    for (const auto& sample : tree.foliage_light()) snapshot.leaf_ball_light.push_back(sample.light);
+    for (const auto& sample : tree.foliage_light()) {
+      snapshot.leaf_ball_light.push_back(sample.light);
+      snapshot.leaf_ball_relative_light.push_back(sample.relative_light);
+    }
     snapshot.leaf_ball_shoot = tree.foliage_shoot_indices();
   } else {
     snapshot.crown_when_gone = tree.leaf_balls();  // kept until its one gone year is written (StandYear)

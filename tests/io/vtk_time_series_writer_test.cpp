@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -146,6 +148,23 @@ TEST_F(VtkTimeSeries, LeafBallsCarryRadiusLightAndTree) {
   // First ball of tree 1 sits on the whorl at 3 m: light 0.2 + 0.1 × 3.
   EXPECT_DOUBLE_EQ(balls->GetPointData()->GetArray("light")->GetTuple1(0), 0.5);
   EXPECT_EQ(balls->GetPointData()->GetArray("tree_id")->GetTuple1(count - 1), 3);
+}
+
+TEST_F(VtkTimeSeries, LeafBallsCarryTheRelativeLightTheShootRulesRead) {
+  VtkTimeSeriesWriter writer(folder_);
+  auto stand = testing::make_synthetic_stand(10, 0);
+  // Tree 1 gets a relative light per ball; the others none, which must read as NaN, not as a neighbour's value.
+  TreeSnapshot& first = stand.snapshot.trees.front();
+  for (std::size_t i = 0; i < first.leaf_balls.size(); ++i) first.leaf_ball_relative_light.push_back(0.01 * (i + 1));
+  auto multiblock = read_multiblock(folder_.path_of(writer.write_year(stand.snapshot)));
+  vtkPolyData* balls = block_named(*multiblock, "leaf_balls");
+  ASSERT_NE(balls, nullptr);
+  vtkDataArray* relative = balls->GetPointData()->GetArray("relative_light");
+  ASSERT_NE(relative, nullptr);
+  ASSERT_EQ(relative->GetNumberOfTuples(), balls->GetNumberOfPoints());
+  const auto own = static_cast<vtkIdType>(first.leaf_balls.size());
+  for (vtkIdType i = 0; i < own; ++i) EXPECT_DOUBLE_EQ(relative->GetTuple1(i), 0.01 * (i + 1)) << i;
+  for (vtkIdType i = own; i < relative->GetNumberOfTuples(); ++i) EXPECT_TRUE(std::isnan(relative->GetTuple1(i))) << i;
 }
 
 TEST_F(VtkTimeSeries, TreesAreOnePointPerStemBaseWithStatusCodeAndLabel) {
