@@ -87,8 +87,8 @@ struct SpeciesParameters {
   // light is below its own threshold D = D0 + dither * U(-1, 1). Conifer defaults are calibrated for the stand's
   // dense foliage (docs/model.md); seed 000's Table 1 values (D0 = 0.6, dither 0.3) would kill every shoot.
   double heliotropism_strength = 0.4;    // I (Table 1)
-  double death_threshold = 0.21;         // D0 on relative light (stand / open grown; calibrated, docs/model.md)
-  double death_threshold_dither = 0.13;  // 0.15 ± 0.1 on the uncorrected far field, carried over (docs/light.md)
+  double death_threshold = 0.15;          // D0 on relative light (stand / open grown; calibrated, docs/model.md)
+  double death_threshold_dither = 0.1;  // half of D0, as the seed's 0.3 around 0.6
   // ours: a tree whose leader is shaded out (below its threshold) this many years in a row is overtopped and
   // dies of light, even while lower branches, shaded by their own crown anyway, still pass the relative test.
   // Off by default in stands since growth follows light (a shaded leader slows down instead, and the tree dies of
@@ -101,22 +101,19 @@ struct SpeciesParameters {
   //   f(r) = clamp((r - zero) / (saturation - zero), 0, 1)
   // (LIGNUM's fip: zero below a fraction of full light, linear up to saturation; Perttunen et al. 1996, Sievänen
   // et al. 2008). Todomatsu is shade tolerant: shoots keep growing down to a low share of the light.
-  // Set by judgement on the uncorrected far field (0.03-0.4, 0.05-0.5) and carried over to the corrected one by
-  // quantile mapping of the example survey's leaf balls (validation/stand/measure_shoot_light.py, docs/light.md).
-  double elongation_light_zero = 0.044;
-  double elongation_light_saturation = 0.48;
-  double height_light_zero = 0.074;
-  double height_light_saturation = 0.57;
+  double elongation_light_zero = 0.03;
+  double elongation_light_saturation = 0.4;
+  double height_light_zero = 0.05;
+  double height_light_saturation = 0.5;
   // Diameter: each year's basal-area increment at breast height = the increment of the seed's taper (eq. 2, scaled
   // to the tree's own DBH) along this year's potential height growth, times a response to the tree's pipe-model light
   // share (ConiferTree::pipe_model_share: absorbed light over that of the established crown alone, per unit of
   // basal area). Zero below the compensation share (the living tissue's respiration comes first: LIGNUM's P - M),
   // linear to 1 at the saturation share. Eq. 2 was measured on co-dominant trees of closed stands, so the taper's
   // increment belongs to a co-dominant's share, not an open-grown tree's: the saturation is the median share of
-  // the example survey's trees in their closed stand at the survey (0.35, quartiles 0.31-0.38,
-  // under the corrected far field; 0.27 on the uncorrected one; docs/model.md).
+  // the example survey's trees in their closed stand at the survey (0.27; quartiles 0.24-0.30; docs/model.md).
   double diameter_light_compensation = 0.05;
-  double diameter_light_saturation = 0.35;
+  double diameter_light_saturation = 0.27;
   // First-order branches die of light once their tip's response has been zero (no elongation) this many years in
   // a row (bud death, LIGNUM); the growth-stop years of eq. 12 then only shape the crown before the survey.
   int branch_starved_years_to_death = 2;

@@ -64,9 +64,9 @@ TEST(LightCulling, BiasCorrectedFarFieldKeepsMeanLightWithinFiveThousandthsOfExa
   EXPECT_GT(deviation(stand.truth, bright).mean_bias, 2 * d.mean_error);
 }
 
-// Off (the default until the shoot rules were carried over to the corrected light): the far field read at the
-// cut-off with the plain density: within the old bound of 0.02, and with its known dark bias (0.0086, all of it
-// dark, docs/light.md), which the correction removes.
+// Off (the default, on which the stand's growth is calibrated): the far field read at the cut-off with the plain
+// density, as before the correction existed: within the old bound of 0.02, and with its known dark bias (0.0086,
+// all of it dark, docs/light.md), which the correction removes.
 TEST(LightCulling, UncorrectedFarFieldKeepsMeanLightWithinTwoHundredthsOfExactAndStaysDark) {
   const Plantation stand;
   const auto uncorrected = culled(stand, false);
@@ -74,13 +74,12 @@ TEST(LightCulling, UncorrectedFarFieldKeepsMeanLightWithinTwoHundredthsOfExactAn
   EXPECT_LE(off.mean_error, 0.02);
   EXPECT_LT(off.mean_bias, -0.006);
   EXPECT_GT(-off.mean_bias, 0.9 * off.mean_error);  // nearly all of the error is toward dark
-  const auto corrected = culled(stand, true);
-  const Deviation on = deviation(stand.truth, corrected);
+  const Deviation on = deviation(stand.truth, culled(stand, true));
   EXPECT_LT(on.mean_error, off.mean_error / 2);
-  // and the default is the corrected far field
-  EXPECT_TRUE(LightParameters{}.far_field_bias_correction);
+  // and the default is the uncorrected far field
+  EXPECT_FALSE(LightParameters{}.far_field_bias_correction);
   const auto by_default = ReferenceLightSolver(LightParameters{}).solve_for(stand.canopy.balls, stand.subsample);
-  for (std::size_t k = 0; k < corrected.size(); ++k) EXPECT_EQ(by_default[k].light, corrected[k].light);
+  for (std::size_t k = 0; k < uncorrected.size(); ++k) EXPECT_EQ(by_default[k].light, uncorrected[k].light);
 }
 
 }  // namespace
