@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """How the shoot rules' relative-light thresholds carry over from one light field to another (docs/light.md,
-"Carrying the shoot rules over to the corrected light").
+"Why it is off by default").
 
   measure_shoot_light.py HELIOSTAND OUT_DIR [--light "KEY = VALUE" ...]
 
@@ -23,6 +23,7 @@ import os
 import re
 import statistics
 import struct
+import subprocess
 import sys
 import xml.etree.ElementTree as ET
 import zlib
@@ -30,7 +31,6 @@ import zlib
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import measure_light_share  # noqa: E402  (the scenario text: one simulated year, thinnings dropped)
-import subprocess  # noqa: E402
 
 # The thresholds on relative light of the Todomatsu defaults (src/architecture/species.hpp).
 THRESHOLDS = [
