@@ -285,6 +285,42 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
   }
 }
 
+// The OpenCL kernels take a receiver's occluders eight at a time (cl/light.cl, OccluderBatch): a receiver with
+// no occluder, a batch left part full, exactly full or full plus one must all match the reference, and so must a
+// receiver sitting inside an occluder in any lane. Stands of 1 to 18 balls give every receiver count of occluders
+// from 0 to 17, in the exact, culled (every ball within the cut-off) and open-grown (each group alone) kernels.
+TEST(LightBatches, EveryOccluderCountFromNoneToTwoFullBatchesMatchesTheReference) {
+  const auto device = compute::opencl_backend_for_test();
+  if (!device) GTEST_SKIP() << "no OpenCL device";
+  LightParameters exact;
+  exact.transmittance = 0.6;
+  LightParameters culled = exact;
+  culled.exact = false;
+  culled.cutoff_m = 100.0;  // every ball in the near field: culled must equal exact
+  const CelestialSphere sky(exact);
+  int receivers_inside = 0;
+  for (std::size_t count = 1; count <= 18; ++count) {
+    // 1.5 m box, radii up to 0.6 m: crowded, so some receivers sit inside another ball
+    const auto balls = testing::random_stand(count, 1.5, 0.2, 0.6, 100 + count, sky, false);
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t j = 0; j < count; ++j)
+        receivers_inside += i != j && glm::length(balls[i].centre - balls[j].centre) < balls[j].radius;
+    const auto expected = ReferenceLightSolver(exact).solve(balls);
+    const std::vector<std::size_t> groups{0, count / 2, count};  // two trees: a batch each, or none
+    const auto expected_alone = ReferenceLightSolver(exact).solve_each_alone(balls, groups);
+    for (const auto& p : {exact, culled}) {
+      const auto actual = make_light_solver(*device, p)->solve(balls);
+      ASSERT_EQ(actual.size(), count);
+      for (std::size_t k = 0; k < count; ++k)
+        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-5) << count << " balls, ball " << k << (p.exact ? " exact" : " culled");
+    }
+    const auto alone = make_light_solver(*device, exact)->solve_each_alone(balls, groups);
+    for (std::size_t k = 0; k < count; ++k)
+      EXPECT_NEAR(alone[k].light, expected_alone[k].light, 1e-5) << count << " balls, ball " << k << " alone";
+  }
+  EXPECT_GT(receivers_inside, 0);  // the lane that shades every patch was exercised
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, LightEquivalenceTest,
                          ::testing::Values(EquivalenceCase{true, false}, EquivalenceCase{false, false},
                                            EquivalenceCase{true, true}, EquivalenceCase{false, true},
