@@ -1,5 +1,6 @@
 #include "compute/opencl_context.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -34,6 +35,13 @@ std::vector<PlatformDevice> enumerate() {
   }
   return all;
 }
+
+// Work items per group on a CPU device (PoCL). Each light work item keeps V x H floats of private state, and
+// PoCL places a whole group's private arrays on one thread's stack, so a large automatic size overflows it (seen
+// at 16k receivers): 64 keeps that at 64 x 2 KB. And PoCL compiles a kernel anew (LLVM, ~0.5 s a time on a
+// 2-core machine) for every work-group size it meets: an automatic size follows the item count, which for the
+// roots changes with every query, so each year paid for new compiles (docs/performance.md).
+constexpr std::size_t cpu_group_size = 64;
 
 std::string type_name(cl_device_type type) {
   if (type & CL_DEVICE_TYPE_GPU) return "GPU";
@@ -93,6 +101,20 @@ cl::Program build_program(const OpenCLContext& context, const std::string& sourc
                              program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(context.device));
   }
   return program;
+}
+
+// A GPU gets its preferred multiple (a warp or wavefront): private arrays spill to its cache either way, and small
+// groups keep more of them resident.
+std::size_t work_group_size(const cl::Kernel& kernel, const cl::Device& device) {
+  const std::size_t most = kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
+  if (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) return std::min(cpu_group_size, most);
+  return std::min(kernel.getWorkGroupInfo<CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE>(device), most);
+}
+
+void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items) {
+  const std::size_t local = work_group_size(kernel, context.device);
+  const std::size_t global = (items + local - 1) / local * local;
+  context.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
 }
 
 }  // namespace heliostand::compute

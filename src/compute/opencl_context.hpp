@@ -24,4 +24,12 @@ std::optional<OpenCLContext> open_opencl_device(std::optional<int> index);
 // Builds `source` for the context's device; throws std::runtime_error with the build log on failure.
 cl::Program build_program(const OpenCLContext& context, const std::string& source, const std::string& options);
 
+// The work-group size every kernel of this program is launched with on `device`: fixed per kernel and device,
+// never left to the OpenCL implementation (see opencl_context.cpp for why).
+std::size_t work_group_size(const cl::Kernel& kernel, const cl::Device& device);
+
+// Launches `kernel` over `items` work items in groups of work_group_size, the global size rounded up to whole
+// groups: every kernel ignores the items at or past its own count.
+void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items);
+
 }  // namespace heliostand::compute

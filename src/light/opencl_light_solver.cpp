@@ -24,24 +24,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Work-group size, per device. Each work item keeps V x H floats of private state; a CPU OpenCL (PoCL) places a
-// whole work-group's private arrays on one thread's stack, so a large automatic local size overflows it (seen
-// at 16k receivers): small explicit groups keep that at 64 x 2 KB. A GPU gets its preferred multiple (a warp
-// or wavefront): the private arrays spill to its cache either way, and small groups keep more of them resident.
-constexpr std::size_t cpu_group_size = 64;
-
-std::size_t group_size_for(const cl::Kernel& kernel, const cl::Device& device) {
-  const std::size_t most = kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
-  if (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) return std::min(cpu_group_size, most);
-  return std::min(kernel.getWorkGroupInfo<CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE>(device), most);
-}
-
-void launch(cl::CommandQueue& queue, cl::Kernel& kernel, const cl::Device& device, std::size_t items) {
-  const std::size_t local = group_size_for(kernel, device);
-  const std::size_t global = (items + local - 1) / local * local;  // the kernels ignore the extra items
-  queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
-}
-
 // Receivers per culled kernel launch (the candidate lists are per tile and go to the device once).
 constexpr std::size_t culled_chunk = std::size_t(1) << 18;
 
@@ -67,7 +49,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const 
   const std::size_t cells = far.grid().cell_count();
   cl::Buffer depth(context, CL_MEM_READ_WRITE, cells * patch_count * sizeof(float));
   const std::size_t columns = std::size_t(far.grid().dims.x) * far.grid().dims.y;
-  const std::size_t local = group_size_for(k, device.device);
+  const std::size_t local = compute::work_group_size(k, device.device);
   int arg = 0;
   k.setArg(arg++, density_buffer);
   k.setArg(arg++, depth);
@@ -189,7 +171,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   k.setArg(arg++, b0_buffer);
   k.setArg(arg++, float(std::log(parameters_.transmittance)));
   k.setArg(arg++, out);
-  launch(device_->cl.queue, k, device_->cl.device, balls.size());
+  compute::launch(device_->cl, k, balls.size());
   std::vector<cl_float4> result(balls.size());
   device_->cl.queue.enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
   for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -257,7 +239,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, float(torus.size.x));
     k.setArg(arg++, float(torus.size.y));
     k.setArg(arg++, out);
-    launch(queue, k, device_->cl.device, receivers.size());
+    compute::launch(device_->cl, k, receivers.size());
     collect(out, 0, receivers.size());
     statistics_.evaluate_seconds = seconds_since(start);
     return samples;
@@ -328,7 +310,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, float(far ? far->start_distance(parameters_.cutoff_m) : parameters_.cutoff_m));
     k.setArg(arg++, far_attenuation);
     k.setArg(arg++, out);
-    launch(queue, k, device_->cl.device, count);
+    compute::launch(device_->cl, k, count);
     queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data() + first);
   }
   std::size_t candidate_total = 0;

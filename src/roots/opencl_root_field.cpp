@@ -191,7 +191,7 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTi
   write(s.cl.queue, s.tips.buffer, tip_data);
   write(s.cl.queue, s.excluded.buffer, excluded);
   write(s.cl.queue, s.probes.buffer, probe_data);
-  s.cl.queue.enqueueNDRangeKernel(s.kernel, cl::NullRange, cl::NDRange(tip_count), cl::NullRange);
+  compute::launch(s.cl, s.kernel, tip_count);
 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);
   s.cl.queue.enqueueReadBuffer(s.contact_out.buffer, CL_FALSE, 0, sizeof(cl_float4) * tip_count, contacts.data());
