@@ -285,6 +285,39 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
   }
 }
 
+// The culled kernel reads the far field eight patches at a time (cl/light.cl) and the sweep fills the table eight
+// columns at a time (cl/far_field.cl): skies whose patch count is not a multiple of eight (2 and 30 patches) and
+// grids of any column count must match the reference too, open and periodic.
+TEST(LightEightLanes, SkiesOfAnyPatchCountMatchTheReferenceInTheFarField) {
+  const auto device = compute::opencl_backend_for_test();
+  if (!device) GTEST_SKIP() << "no OpenCL device";
+  for (const auto& [bands, sectors] : {std::pair{2, 1}, std::pair{6, 5}, std::pair{4, 4}})
+    for (const bool periodic : {false, true}) {
+      LightParameters p;
+      p.exact = false;
+      p.periodic = periodic;
+      p.sky_bands = bands;
+      p.sky_sectors = sectors;
+      p.plot_x_max = 5.5;  // 7 x 7 cells of 0.9 m and more: columns not a multiple of eight
+      p.plot_y_max = 5.5;
+      p.cutoff_m = 1.5;  // most of the shade from the far field
+      p.far_field_cell_m = 0.9;
+      p.transmittance = 0.6;
+      const CelestialSphere sky(p);
+      const auto balls = testing::random_stand(150, 5.5, 0.2, 0.6, 7, sky, periodic);
+      const auto expected = ReferenceLightSolver(p).solve(balls);
+      const auto actual = make_light_solver(*device, p)->solve(balls);
+      ASSERT_EQ(actual.size(), balls.size());
+      double lowest = 1;
+      for (std::size_t k = 0; k < balls.size(); ++k) {
+        lowest = std::min(lowest, expected[k].light);
+        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4)
+            << bands << " x " << sectors << (periodic ? " periodic" : " open") << ", ball " << k;
+      }
+      EXPECT_LT(lowest, 0.8) << bands << " x " << sectors;  // there is shade to get right
+    }
+}
+
 // The OpenCL kernels take a receiver's occluders eight at a time (cl/light.cl, OccluderBatch): a receiver with
 // no occluder, a batch left part full, exactly full or full plus one must all match the reference, and so must a
 // receiver sitting inside an occluder in any lane. Stands of 1 to 18 balls give every receiver count of occluders
