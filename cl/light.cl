@@ -222,18 +222,18 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   }
   batch_finish(&batch, log_b, patches, log_t);
   // Eight patches at a time, each lane in its patch's table (a lane past the last patch repeats it, unused).
-  const long cells = (long)grid_dims.x * grid_dims.y * grid_dims.z;
+  const size_t cells = (size_t)grid_dims.x * grid_dims.y * grid_dims.z;
   for (int first = 0; first < PATCH_COUNT; first += 8) {
     float x[8], y[8], z[8];
-    long table[8];
+    int table[8];
     for (int l = 0; l < 8; ++l) {
       const int p = min(first + l, PATCH_COUNT - 1);
       const float3 start = centre + far_start * patches[p].xyz;
-      x[l] = start.x, y[l] = start.y, z[l] = start.z, table[l] = p * cells;
+      x[l] = start.x, y[l] = start.y, z[l] = start.z, table[l] = p;
     }
     float tau[8];
-    vstore8(grid_sample8(far_depth, vload8(0, table), vload8(0, x), vload8(0, y), vload8(0, z), grid_origin.xyz,
-                         grid_cell.xyz, grid_dims, periodic), 0, tau);
+    vstore8(grid_sample8(far_depth, vload8(0, table), cells, vload8(0, x), vload8(0, y), vload8(0, z),
+                         grid_origin.xyz, grid_cell.xyz, grid_dims, periodic), 0, tau);
     for (int l = 0; l < 8 && first + l < PATCH_COUNT; ++l) log_b[first + l] -= one_minus_t * tau[l];
   }
   out[slot] = light_sample(log_b, patches, b0);
