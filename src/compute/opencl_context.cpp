@@ -38,7 +38,7 @@ std::vector<PlatformDevice> enumerate() {
 
 // Work items per group on a CPU device (PoCL). Each light work item keeps V x H floats of private state, and
 // PoCL places a whole group's private arrays on one thread's stack, so a large automatic size overflows it (seen
-// at 16k receivers): 64 keeps that at 64 x 2 KB. And PoCL compiles a kernel anew (LLVM, ~0.5 s a time on a
+// at 16k receivers): 64 keeps that at 64 x 2 KB. And PoCL compiles a kernel anew (LLVM, ~0.25 s for the roots on a
 // 2-core machine) for every work-group size it meets: an automatic size follows the item count, which for the
 // roots changes with every query, so each year paid for new compiles (docs/performance.md).
 constexpr std::size_t cpu_group_size = 64;
