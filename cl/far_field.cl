@@ -47,12 +47,13 @@ __kernel void far_field_layer(__global const float* density, __global float* dep
   const int next = z + step_z;
   float8 tau;
   if (next < 0 || next >= grid_dims.z) {
-    tau = far_field_march8(density, sx, sy, sz, direction, max_path, origin, cell, grid_dims, periodic, saturated, valid);
+    tau = far_field_march8(density, sx, sy, sz, direction, max_path, origin, cell, grid_dims, periodic, saturated,
+                           valid);
   } else {
     const float reach = cell.z / fabs(direction.z);  // path to the next layer's mid-plane
     tau = far_field_march8(density, sx, sy, sz, direction, reach, origin, cell, grid_dims, periodic, saturated, valid);
-    tau += grid_sample_layer8(table, (int8)(0), 0, sx + reach * direction.x, sy + reach * direction.y, sz + reach * direction.z,
-                              origin, cell, grid_dims, periodic, next);
+    tau += grid_sample_layer8(table, (int8)(0), 0, sx + reach * direction.x, sy + reach * direction.y,
+                              sz + reach * direction.z, origin, cell, grid_dims, periodic, next);
   }
   float lane_tau[8];
   vstore8(tau, 0, lane_tau);

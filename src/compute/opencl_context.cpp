@@ -111,10 +111,13 @@ std::size_t work_group_size(const cl::Kernel& kernel, const cl::Device& device) 
   return std::min(kernel.getWorkGroupInfo<CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE>(device), most);
 }
 
-void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items) {
+void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items, std::size_t rows) {
   const std::size_t local = work_group_size(kernel, context.device);
   const std::size_t global = (items + local - 1) / local * local;
-  context.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
+  if (rows == 1)
+    context.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local));
+  else
+    context.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global, rows), cl::NDRange(local, 1));
 }
 
 }  // namespace heliostand::compute

@@ -29,7 +29,8 @@ cl::Program build_program(const OpenCLContext& context, const std::string& sourc
 std::size_t work_group_size(const cl::Kernel& kernel, const cl::Device& device);
 
 // Launches `kernel` over `items` work items in groups of work_group_size, the global size rounded up to whole
-// groups: every kernel ignores the items at or past its own count.
-void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items);
+// groups: every kernel ignores the items at or past its own count. `rows` > 1 adds a second dimension of that
+// many rows (groups one row high).
+void launch(const OpenCLContext& context, cl::Kernel& kernel, std::size_t items, std::size_t rows = 1);
 
 }  // namespace heliostand::compute

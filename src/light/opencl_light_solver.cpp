@@ -50,7 +50,6 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const 
   cl::Buffer depth(context, CL_MEM_READ_WRITE, cells * patch_count * sizeof(float));
   const std::size_t columns = std::size_t(far.grid().dims.x) * far.grid().dims.y;
   const std::size_t column_items = (columns + 7) / 8;  // eight columns a work item (cl/far_field.cl)
-  const std::size_t local = compute::work_group_size(k, device.device);
   int arg = 0;
   k.setArg(arg++, density_buffer);
   k.setArg(arg++, depth);
@@ -65,9 +64,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const 
   // Each layer reads the one swept before it: one launch per layer, in order on the in-order queue.
   for (int layer = 0; layer < far.grid().dims.z; ++layer) {
     k.setArg(layer_arg, cl_int(layer));
-    device.queue.enqueueNDRangeKernel(k, cl::NullRange,
-                                      cl::NDRange((column_items + local - 1) / local * local, patch_count),
-                                      cl::NDRange(local, 1));
+    compute::launch(device, k, column_items, patch_count);
   }
   device.queue.finish();
   return depth;
