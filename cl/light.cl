@@ -17,11 +17,38 @@
 #define WINDOW_MARGIN_COS 0.9999995f  // cos(WINDOW_MARGIN)
 #define WINDOW_MARGIN_SIN 9.9999983e-4f  // sin(WINDOW_MARGIN)
 
-// The ray test of the reference solver: half-line from the receiver along n vs a ball at offset d, radius r.
-inline bool ray_hits(float3 d, float r, float3 n) {
-  if (dot(n, d) <= 0.0f) return false;
-  const float3 c = cross(d, n);
-  return dot(c, c) <= r * r;
+// Patch centre directions by axis, for eight patches at a time: x of every patch, then y, then z, AXIS_STRIDE
+// apart; each axis and every receiver's log_b carry eight padding entries, so that eight patches read from any
+// patch of the sky stay inside the arrays.
+#define AXIS_STRIDE (PATCH_COUNT + 8)
+
+// The ray test of the reference solver (half-line from the receiver along n hits the ball at offset d: in front,
+// and |d x n|^2 <= r^2), for the patches first .. last of one band, eight at a time: log(t) is added to each patch
+// hit and 0 to the others (a lane past `last` adds 0 to whatever it reads), so every patch sums the same terms in
+// the same order as a patch-by-patch loop would. Without contraction into fused multiply-adds the eight lanes
+// decide each hit exactly as the scalar test they replace did (same tables, docs/performance.md).
+inline void shade_patch_run(float* log_b, __global const float* axes, int first, int last, float3 d, float r2,
+                            float log_t) {
+#pragma OPENCL FP_CONTRACT OFF
+  const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  for (int p = first; p <= last; p += 8) {
+    const float8 nx = vload8(0, axes + p), ny = vload8(0, axes + AXIS_STRIDE + p);
+    const float8 nz = vload8(0, axes + 2 * AXIS_STRIDE + p);
+    const float8 along = nx * d.x + ny * d.y + nz * d.z;
+    const float8 cx = d.y * nz - d.z * ny, cy = d.z * nx - d.x * nz, cz = d.x * ny - d.y * nx;
+    const int8 hit = along > 0.0f && cx * cx + cy * cy + cz * cz <= r2 && p + lane <= last;
+    vstore8(vload8(0, log_b + p) + select((float8)(0.0f), (float8)(log_t), hit), 0, log_b + p);
+  }
+}
+
+// The sectors h_lo .. h_hi of band v, where -SKY_SECTORS <= h_lo and h_hi < 2 SKY_SECTORS: up to three runs of
+// contiguous patches (the part before sector 0, the band itself, the part past its last sector, each wrapped).
+inline void shade_band(float* log_b, __global const float* axes, int v, int h_lo, int h_hi, float3 d, float r2,
+                       float log_t) {
+  const int row = v * SKY_SECTORS;
+  shade_patch_run(log_b, axes, row + h_lo + SKY_SECTORS, row + min(h_hi, -1) + SKY_SECTORS, d, r2, log_t);
+  shade_patch_run(log_b, axes, row + max(h_lo, 0), row + min(h_hi, SKY_SECTORS - 1), d, r2, log_t);
+  shade_patch_run(log_b, axes, row + max(h_lo, SKY_SECTORS) - SKY_SECTORS, row + h_hi - SKY_SECTORS, d, r2, log_t);
 }
 
 // Inverse trigonometry for the patch window only. Polynomials of Abramowitz & Stegun (1964), 4.4.45 (acos,
@@ -50,8 +77,9 @@ inline float8 atan2_window(float8 y, float8 x) {  // in (-pi, pi], like atan2
 // most of the near field's work: three square roots, three polynomials and four roundings per ball, with no
 // branch that depends on the data. Collected into a batch of eight, it runs in the SIMD lanes of a CPU (float8: a
 // real canopy's solve in 0.6 of its time on PoCL, docs/performance.md); a GPU runs the same code as eight scalar
-// computations. The patch loops that follow stay scalar, lane after lane in the order the balls were added, so
-// every patch sums the same terms in the same order as one ball at a time would.
+// computations. The balls' patches are then tested ball after ball in the order the balls were added (each
+// band in runs of eight patches, shade_band), so every patch sums the same terms in the same order as one ball at a
+// time would.
 typedef struct {
   float x[8], y[8], z[8], r[8];  // offset from the receiver and radius of each ball in the batch
   int count;
@@ -65,7 +93,7 @@ inline void batch_clear(OccluderBatch* batch) {
 // Adds log(t) to every patch whose centre ray hits a ball of the batch. Only the patches whose centre can lie in a
 // ball's angular disc (half-angle asin(r/|d|)) are tested (seed 000 "scan-converts" each ball onto the receiver's
 // sky the same way), so the cost per ball is O(1) + the patches it covers.
-inline void shade_by_batch(float* log_b, __global const float4* patches, const OccluderBatch* batch, float log_t) {
+inline void shade_by_batch(float* log_b, __global const float* axes, const OccluderBatch* batch, float log_t) {
   const float8 dx = vload8(0, batch->x), dy = vload8(0, batch->y), dz = vload8(0, batch->z), r = vload8(0, batch->r);
   const float8 dist2 = dx * dx + dy * dy + dz * dz;
   const float8 inverse_dist = rsqrt(dist2);
@@ -96,29 +124,25 @@ inline void shade_by_batch(float* log_b, __global const float4* patches, const O
       for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
       continue;
     }
-    // h_lo >= -SKY_SECTORS and h_hi < 2 SKY_SECTORS: one add or subtract wraps a sector (no integer division)
     const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
+    const float r2 = batch->r[l] * batch->r[l];
     for (int v = lane_v_lo[l]; v <= lane_v_hi[l]; ++v)
-      for (int h = lane_h_lo[l]; h <= lane_h_hi[l]; ++h) {
-        const int sector = h < 0 ? h + SKY_SECTORS : (h >= SKY_SECTORS ? h - SKY_SECTORS : h);
-        const int p = v * SKY_SECTORS + sector;
-        if (ray_hits(d, batch->r[l], patches[p].xyz)) log_b[p] += log_t;
-      }
+      shade_band(log_b, axes, v, lane_h_lo[l], lane_h_hi[l], d, r2, log_t);
   }
 }
 
 // Shades the receiver by the balls in the batch, if any, and empties it.
-inline void batch_finish(OccluderBatch* batch, float* log_b, __global const float4* patches, float log_t) {
-  if (batch->count > 0) shade_by_batch(log_b, patches, batch, log_t);
+inline void batch_finish(OccluderBatch* batch, float* log_b, __global const float* axes, float log_t) {
+  if (batch->count > 0) shade_by_batch(log_b, axes, batch, log_t);
   batch->count = 0;
 }
 
 // Puts the ball at offset d into the batch, shading the receiver once eight are in; batch_finish shades the rest.
-inline void shade_by_ball(OccluderBatch* batch, float* log_b, __global const float4* patches, float3 d, float r,
+inline void shade_by_ball(OccluderBatch* batch, float* log_b, __global const float* axes, float3 d, float r,
                           float log_t) {
   const int l = batch->count++;
   batch->x[l] = d.x, batch->y[l] = d.y, batch->z[l] = d.z, batch->r[l] = r;
-  if (batch->count == 8) batch_finish(batch, log_b, patches, log_t);
+  if (batch->count == 8) batch_finish(batch, log_b, axes, log_t);
 }
 
 // light = Σ B S / Σ B0 S and vector = normalize(Σ N B S), packed as (vector, light).
@@ -140,15 +164,15 @@ inline float4 light_sample(const float* log_b, __global const float4* patches, _
 // Exact: every other ball of the stand; periodic: also each ball's images in the 8 neighbouring plots.
 __kernel void light_exact(__global const float4* balls, const int ball_count,
                           __global const int* receivers, const int receiver_count,
-                          __global const float4* patches, __global const float* b0, const float log_t,
-                          const int periodic, const float plot_width, const float plot_depth,
+                          __global const float4* patches, __global const float* axes, __global const float* b0,
+                          const float log_t, const int periodic, const float plot_width, const float plot_depth,
                           __global float4* out) {
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
   const int i = receivers[slot];
   const float3 centre = balls[i].xyz;
-  float log_b[PATCH_COUNT];
-  for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] = 0.0f;
+  float log_b[AXIS_STRIDE];
+  for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
   const int reach = periodic ? 1 : 0;
@@ -159,10 +183,10 @@ __kernel void light_exact(__global const float4* balls, const int ball_count,
         if (j == i && sx == 0 && sy == 0) continue;
         const float3 d = (float3)(ball.x + sx * plot_width - centre.x, ball.y + sy * plot_depth - centre.y,
                                   ball.z - centre.z);
-        shade_by_ball(&batch, log_b, patches, d, ball.w, log_t);
+        shade_by_ball(&batch, log_b, axes, d, ball.w, log_t);
       }
   }
-  batch_finish(&batch, log_b, patches, log_t);
+  batch_finish(&batch, log_b, axes, log_t);
   out[slot] = light_sample(log_b, patches, b0);
 }
 
@@ -171,22 +195,22 @@ __kernel void light_exact(__global const float4* balls, const int ball_count,
 // relative to each group's own origin, as when the group is solved as a stand by itself.
 __kernel void light_each_alone(__global const float4* balls, __global const int* ball_group,
                                __global const int* group_start, const int ball_count,
-                               __global const float4* patches, __global const float* b0, const float log_t,
-                               __global float4* out) {
+                               __global const float4* patches, __global const float* axes,
+                               __global const float* b0, const float log_t, __global float4* out) {
   const int i = get_global_id(0);
   if (i >= ball_count) return;
   const int g = ball_group[i];
   const float3 centre = balls[i].xyz;
-  float log_b[PATCH_COUNT];
-  for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] = 0.0f;
+  float log_b[AXIS_STRIDE];
+  for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
   for (int j = group_start[g]; j < group_start[g + 1]; ++j) {
     if (j == i) continue;
     const float4 ball = balls[j];
-    shade_by_ball(&batch, log_b, patches, ball.xyz - centre, ball.w, log_t);
+    shade_by_ball(&batch, log_b, axes, ball.xyz - centre, ball.w, log_t);
   }
-  batch_finish(&batch, log_b, patches, log_t);
+  batch_finish(&batch, log_b, axes, log_t);
   out[i] = light_sample(log_b, patches, b0);
 }
 
@@ -198,8 +222,8 @@ __kernel void light_each_alone(__global const float4* balls, __global const int*
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
                            __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
-                           __global const float4* patches, __global const float* b0, const float log_t,
-                           __global const float* far_depth, const float4 grid_origin, const float4 grid_cell,
+                           __global const float4* patches, __global const float* axes, __global const float* b0,
+                           const float log_t, __global const float* far_depth, const float4 grid_origin, const float4 grid_cell,
                            const int4 grid_dims, const int periodic, const float cutoff, const float far_start,
                            const float one_minus_t,
                            __global float4* out) {
@@ -209,8 +233,8 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   const int tile = receiver_tiles[slot];
   const float3 centre = balls[self].xyz;
   const float cutoff2 = cutoff * cutoff;
-  float log_b[PATCH_COUNT];
-  for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] = 0.0f;
+  float log_b[AXIS_STRIDE];
+  for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
   for (int k = candidate_start[tile]; k < candidate_start[tile + 1]; ++k) {
@@ -218,9 +242,9 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
     const float4 ball = balls[j];
     const float3 d = ball.xyz - centre;
     if (j == self || dot(d, d) > cutoff2) continue;
-    shade_by_ball(&batch, log_b, patches, d, ball.w, log_t);
+    shade_by_ball(&batch, log_b, axes, d, ball.w, log_t);
   }
-  batch_finish(&batch, log_b, patches, log_t);
+  batch_finish(&batch, log_b, axes, log_t);
   // Eight patches at a time, each lane in its patch's table (a lane past the last patch repeats it, unused).
   const size_t cells = (size_t)grid_dims.x * grid_dims.y * grid_dims.z;
   for (int first = 0; first < PATCH_COUNT; first += 8) {

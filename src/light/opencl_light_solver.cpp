@@ -83,9 +83,11 @@ cl_float4 relative_ball(const glm::dvec3& centre, double radius, const glm::dvec
   return {{float(c.x), float(c.y), float(c.z), float(radius)}};
 }
 
-// The sky as the kernels read it: (N, S) per patch and B0 per patch.
+// The sky as the kernels read it: (N, S) per patch, N again by axis (x of every patch, then y, then z, each padded
+// by eight zeros: the kernels test eight patches at a time, cl/light.cl) and B0 per patch.
 struct SkyData {
   std::vector<cl_float4> patches;
+  std::vector<float> axes;
   std::vector<float> b0;
 };
 
@@ -96,6 +98,10 @@ SkyData sky_data_of(const CelestialSphere& sky) {
                              float(patch.solid_angle)}});
     data.b0.push_back(float(patch.initial_intensity));
   }
+  const std::size_t stride = data.patches.size() + 8;
+  data.axes.assign(3 * stride, 0.0f);
+  for (std::size_t p = 0; p < data.patches.size(); ++p)
+    for (std::size_t axis = 0; axis < 3; ++axis) data.axes[axis * stride + p] = data.patches[p].s[axis];
   return data;
 }
 
@@ -158,6 +164,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   const cl::Buffer groups_buffer = read_only(context, ball_group);
   const cl::Buffer starts_buffer = read_only(context, starts);
   const cl::Buffer patches_buffer = read_only(context, sky_data.patches);
+  const cl::Buffer axes_buffer = read_only(context, sky_data.axes);
   const cl::Buffer b0_buffer = read_only(context, sky_data.b0);
   cl::Buffer out(context, CL_MEM_WRITE_ONLY, balls.size() * sizeof(cl_float4));
   auto& k = device_->each_alone;
@@ -167,6 +174,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   k.setArg(arg++, starts_buffer);
   k.setArg(arg++, cl_int(balls.size()));
   k.setArg(arg++, patches_buffer);
+  k.setArg(arg++, axes_buffer);
   k.setArg(arg++, b0_buffer);
   k.setArg(arg++, float(std::log(parameters_.transmittance)));
   k.setArg(arg++, out);
@@ -205,6 +213,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   auto& queue = device_->cl.queue;
   const cl::Buffer balls_buffer = read_only(context, ball_data);
   const cl::Buffer patches_buffer = read_only(context, patch_data);
+  const cl::Buffer axes_buffer = read_only(context, sky_data.axes);
   const cl::Buffer b0_buffer = read_only(context, b0);
   const float log_t = float(std::log(parameters_.transmittance));
 
@@ -232,6 +241,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, receivers_buffer);
     k.setArg(arg++, cl_int(receivers.size()));
     k.setArg(arg++, patches_buffer);
+    k.setArg(arg++, axes_buffer);
     k.setArg(arg++, b0_buffer);
     k.setArg(arg++, log_t);
     k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
@@ -298,6 +308,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, starts_buffer);
     k.setArg(arg++, candidates_buffer);
     k.setArg(arg++, patches_buffer);
+    k.setArg(arg++, axes_buffer);
     k.setArg(arg++, b0_buffer);
     k.setArg(arg++, log_t);
     k.setArg(arg++, depth_buffer);
