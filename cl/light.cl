@@ -2,8 +2,9 @@
 // balls: (x, y, z, radius) relative to a stand origin chosen by the host (keeps float precision).
 // patches: (N(h,v), S(h,v)); b0: B0 per patch. Output per receiver: (light vector, light).
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
-// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), and BALANCED_LIGHT_FRACTION, made by the
-// host from light_sum.hpp's balanced_light_fraction (the one copy: both backends use the same threshold).
+// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), AXIS_STRIDE (below), and
+// BALANCED_LIGHT_FRACTION, made by the host from light_sum.hpp's balanced_light_fraction (the one copy: both
+// backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
 #include "voxel_grid.clh"
 
@@ -18,9 +19,11 @@
 #define WINDOW_MARGIN_SIN 9.9999983e-4f  // sin(WINDOW_MARGIN)
 
 // Patch centre directions by axis, for eight patches at a time: x of every patch, then y, then z, AXIS_STRIDE
-// apart; each axis and every receiver's log_b carry eight padding entries, so that eight patches read from any
-// patch of the sky stay inside the arrays.
-#define AXIS_STRIDE (PATCH_COUNT + 8)
+// apart (a build option: the host lays the array out). Each axis and every receiver's log_b carry at least seven
+// padding entries, so that eight patches read from any patch of the sky stay inside the arrays.
+#if AXIS_STRIDE < PATCH_COUNT + 7
+#error "AXIS_STRIDE leaves no room for a run of eight patches from the last one"
+#endif
 
 // The ray test of the reference solver (half-line from the receiver along n hits the ball at offset d: in front,
 // and |d x n|^2 <= r^2), for the patches first .. last of one band, eight at a time: log(t) is added to each patch
@@ -223,10 +226,9 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
                            __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
                            __global const float4* patches, __global const float* axes, __global const float* b0,
-                           const float log_t, __global const float* far_depth, const float4 grid_origin, const float4 grid_cell,
-                           const int4 grid_dims, const int periodic, const float cutoff, const float far_start,
-                           const float one_minus_t,
-                           __global float4* out) {
+                           const float log_t, __global const float* far_depth, const float4 grid_origin,
+                           const float4 grid_cell, const int4 grid_dims, const int periodic, const float cutoff,
+                           const float far_start, const float one_minus_t, __global float4* out) {
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
   const int self = receivers[slot];

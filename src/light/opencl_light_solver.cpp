@@ -83,8 +83,12 @@ cl_float4 relative_ball(const glm::dvec3& centre, double radius, const glm::dvec
   return {{float(c.x), float(c.y), float(c.z), float(radius)}};
 }
 
-// The sky as the kernels read it: (N, S) per patch, N again by axis (x of every patch, then y, then z, each padded
-// by eight zeros: the kernels test eight patches at a time, cl/light.cl) and B0 per patch.
+// Entries per axis in SkyData::axes: every patch and eight zeros, since the kernels test runs of eight patches
+// (float8, cl/light.cl) from any patch. The kernels get it as the build option AXIS_STRIDE.
+std::size_t axis_stride(std::size_t patch_count) { return patch_count + 8; }
+
+// The sky as the kernels read it: (N, S) per patch, N again by axis (x of every patch, then y, then z,
+// axis_stride apart) and B0 per patch.
 struct SkyData {
   std::vector<cl_float4> patches;
   std::vector<float> axes;
@@ -98,7 +102,7 @@ SkyData sky_data_of(const CelestialSphere& sky) {
                              float(patch.solid_angle)}});
     data.b0.push_back(float(patch.initial_intensity));
   }
-  const std::size_t stride = data.patches.size() + 8;
+  const std::size_t stride = axis_stride(data.patches.size());
   data.axes.assign(3 * stride, 0.0f);
   for (std::size_t p = 0; p < data.patches.size(); ++p)
     for (std::size_t axis = 0; axis < 3; ++axis) data.axes[axis * stride + p] = data.patches[p].s[axis];
@@ -124,6 +128,7 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
   const auto options = compute::KernelOptions()
                            .define("SKY_BANDS", parameters_.sky_bands)
                            .define("SKY_SECTORS", parameters_.sky_sectors)
+                           .define("AXIS_STRIDE", int(axis_stride(parameters_.sky_bands * parameters_.sky_sectors)))
                            .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction);
   const std::string source = compute::kernel_source("far_field.cl") + compute::kernel_source("light.cl");
   device_->program = compute::build_program(device_->cl, source, options.text());
