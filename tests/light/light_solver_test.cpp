@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <string>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -318,6 +319,27 @@ TEST(LightEightLanes, SkiesOfAnyPatchCountMatchTheReferenceInTheFarField) {
     }
 }
 
+// The exact and culled kernels against the reference's exact answer on `balls` (`culled` keeps every ball within
+// its cut-off, so it must equal exact), and the open-grown kernel against the reference's on `groups`, all at 1e-5:
+// one patch shaded or missed moves a light by ~(1 - t) / patch count, far above it. `label` names the case.
+void expect_kernels_match_reference(const compute::ComputeBackend& device, const LightParameters& exact,
+                                    const LightParameters& culled, const std::vector<LeafBall>& balls,
+                                    const std::vector<std::size_t>& groups, const std::string& label) {
+  const auto expected = ReferenceLightSolver(exact).solve(balls);
+  for (const auto& p : {exact, culled}) {
+    const auto actual = make_light_solver(device, p)->solve(balls);
+    ASSERT_EQ(actual.size(), balls.size()) << label;
+    for (std::size_t k = 0; k < balls.size(); ++k)
+      EXPECT_NEAR(actual[k].light, expected[k].light, 1e-5)
+          << label << (p.exact ? " exact" : " culled") << ", ball " << k;
+  }
+  const auto expected_alone = ReferenceLightSolver(exact).solve_each_alone(balls, groups);
+  const auto alone = make_light_solver(device, exact)->solve_each_alone(balls, groups);
+  ASSERT_EQ(alone.size(), balls.size()) << label;
+  for (std::size_t k = 0; k < balls.size(); ++k)
+    EXPECT_NEAR(alone[k].light, expected_alone[k].light, 1e-5) << label << " alone, ball " << k;
+}
+
 // The OpenCL kernels take a receiver's occluders eight at a time (cl/light.cl, OccluderBatch): a receiver with
 // no occluder, a batch left part full, exactly full or full plus one must all match the reference, and so must a
 // receiver sitting inside an occluder in any lane. Stands of 1 to 18 balls give every receiver count of occluders
@@ -339,18 +361,8 @@ TEST(LightBatches, EveryOccluderCountFromNoneToTwoFullBatchesMatchesTheReference
     for (std::size_t i = 0; i < count; ++i)
       for (std::size_t j = 0; j < count; ++j)
         receivers_inside += i != j && glm::length(balls[i].centre - balls[j].centre) < balls[j].radius;
-    const auto expected = ReferenceLightSolver(exact).solve(balls);
     const std::vector<std::size_t> groups{0, count / 2, count};  // two trees: a batch each, or none
-    const auto expected_alone = ReferenceLightSolver(exact).solve_each_alone(balls, groups);
-    for (const auto& p : {exact, culled}) {
-      const auto actual = make_light_solver(*device, p)->solve(balls);
-      ASSERT_EQ(actual.size(), count);
-      for (std::size_t k = 0; k < count; ++k)
-        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-5) << count << " balls, ball " << k << (p.exact ? " exact" : " culled");
-    }
-    const auto alone = make_light_solver(*device, exact)->solve_each_alone(balls, groups);
-    for (std::size_t k = 0; k < count; ++k)
-      EXPECT_NEAR(alone[k].light, expected_alone[k].light, 1e-5) << count << " balls, ball " << k << " alone";
+    expect_kernels_match_reference(*device, exact, culled, balls, groups, std::to_string(count) + " balls");
   }
   EXPECT_GT(receivers_inside, 0);  // the lane that shades every patch was exercised
 }
@@ -360,12 +372,10 @@ TEST(LightBatches, EveryOccluderCountFromNoneToTwoFullBatchesMatchesTheReference
 // or around the zenith is several, and on a sky whose sector count is not a multiple of eight a run's last eight
 // read into the next band. Balls placed in exactly those directions from a receiver, every ball also a receiver,
 // must match the reference on skies of 16 x 32, 6 x 7 and 4 x 9 patches, in the exact, culled and open-grown kernels.
-// One patch shaded or missed moves a light by ~(1 - t) / patch count, far above the tolerance.
 TEST(LightPatchRuns, WindowsAcrossSectorZeroAroundTheZenithAndWideMatchTheReference) {
   const auto device = compute::opencl_backend_for_test();
   if (!device) GTEST_SKIP() << "no OpenCL device";
   std::vector<LeafBall> balls{{{0.0, 0.0, 0.0}, 0.05}};
-  const double pi = std::numbers::pi;
   for (const double azimuth : {0.0, 0.03, -0.03, 0.5 * pi, pi, 2.0 * pi - 0.2})
     for (const double polar : {0.04, 0.7, 1.55, 2.4})
       for (const double sin_half_angle : {0.05, 0.35, 0.9}) {
@@ -384,20 +394,10 @@ TEST(LightPatchRuns, WindowsAcrossSectorZeroAroundTheZenithAndWideMatchTheRefere
     culled.exact = false;
     culled.far_field = false;
     culled.cutoff_m = 100.0;  // every ball in the near field: culled must equal exact
-    const auto expected = ReferenceLightSolver(exact).solve(balls);
-    for (const auto& p : {exact, culled}) {
-      const auto actual = make_light_solver(*device, p)->solve(balls);
-      ASSERT_EQ(actual.size(), balls.size());
-      for (std::size_t k = 0; k < balls.size(); ++k)
-        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-5)
-            << bands << " x " << sectors << (p.exact ? " exact" : " culled") << ", ball " << k;
-    }
-    const std::vector<std::size_t> one_tree{0, balls.size()};
-    const auto expected_alone = ReferenceLightSolver(exact).solve_each_alone(balls, one_tree);
-    const auto alone = make_light_solver(*device, exact)->solve_each_alone(balls, one_tree);
-    for (std::size_t k = 0; k < balls.size(); ++k)
-      EXPECT_NEAR(alone[k].light, expected_alone[k].light, 1e-5) << bands << " x " << sectors << ", ball " << k;
-    EXPECT_LT(expected[0].light, 0.8) << bands << " x " << sectors;  // the first receiver really is shaded
+    const std::string sky = std::to_string(bands) + " x " + std::to_string(sectors);
+    expect_kernels_match_reference(*device, exact, culled, balls, {0, balls.size()}, sky);  // one tree
+    const std::uint32_t first_receiver = 0;
+    EXPECT_LT(ReferenceLightSolver(exact).solve_for(balls, {&first_receiver, 1})[0].light, 0.8) << sky;  // shaded
   }
 }
 
