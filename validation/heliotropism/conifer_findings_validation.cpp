@@ -1,11 +1,12 @@
 // Seed 000's last two figures on the conifer (seed 001's branching pattern), as measured quantities averaged over
 // seeds (docs/model.md, table of findings):
-//  - Fig. 16: heliotropism works with a conifer branching pattern: beside a neighbour, the crown leans toward the
-//    open side more with heliotropism (I = 0.4) than without (I = 0), everything else equal (by a few millimetres:
-//    a deviation, docs/model.md);
+//  - Fig. 16: heliotropism works with a conifer branching pattern: beside a neighbour, the shoots that flush in the
+//    stand turn toward the open side with heliotropism (I = 0.4) more than without (I = 0), everything else equal,
+//    in every seed. The crown as a whole does not lean further away with it (a deviation, recorded: docs/model.md);
 //  - Fig. 17: with an active period, lower boughs past it die and fall, so the crown base rises with age and the
 //    lower stem is bare without any special long root branch; a tree whose boughs never end their active period
 //    keeps its crown to the ground.
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -49,9 +50,14 @@ TEST(ConiferFindings, Fig17ActivePeriodRaisesTheCrownBaseWithAgeAndBaresTheLower
   EXPECT_GT(with_period[2], endless[2] + 1.0);  // the bare lower stem comes from the active period alone
 }
 
+// The tree beside its neighbour after the stand's light response.
+struct BesideANeighbour {
+  double new_shoots_toward_east = 0;  // mean x of the unit directions of the shoots flushed in the stand (< 0: west)
+  double crown_lean_m = 0;            // mean x of the leaf balls from the stem (< 0: leaning west)
+};
+
 // A tree with one neighbour 1.5 m to the east, both 8 years old, grown 4 years with the stand's light response.
-// Returns the mean x of its leaf balls relative to its stem (negative: leaning west, away from the neighbour).
-double lean_toward_the_open(std::uint64_t seed, double heliotropism) {
+BesideANeighbour beside_a_neighbour(std::uint64_t seed, double heliotropism) {
   SpeciesParameters species;
   species.heliotropism_strength = heliotropism;
   std::vector<StandTree> trees;
@@ -68,24 +74,40 @@ double lean_toward_the_open(std::uint64_t seed, double heliotropism) {
   StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 1}, clock);
   for (int year = 0; year <= 4; ++year) simulated_year.run(year);
   const ConiferTree& tree = stand.trees()[0].conifer;
-  double sum = 0.0;
+  BesideANeighbour found;
+  int flushed = 0;
+  for (const Shoot& shoot : tree.shoots()) {
+    if (shoot.parent < 0 || shoot.year_formed <= 8) continue;  // only what flushed in the stand (ages 9-12)
+    const glm::dvec3 along = shoot.tip - shoot.base;
+    if (glm::length(along) <= 0) continue;
+    found.new_shoots_toward_east += glm::normalize(along).x;
+    ++flushed;
+  }
+  if (flushed > 0) found.new_shoots_toward_east /= flushed;
   const auto balls = tree.leaf_balls();
-  for (const LeafBall& ball : balls) sum += ball.centre.x - tree.stem_base().x;
-  return balls.empty() ? 0.0 : sum / balls.size();
+  for (const LeafBall& ball : balls) found.crown_lean_m += (ball.centre.x - tree.stem_base().x) / balls.size();
+  return found;
 }
 
-TEST(ConiferFindings, Fig16HeliotropismTurnsAConiferCrownTowardTheOpenSide) {
-  double with = 0.0, without = 0.0;
-  for (int s = 1; s <= seeds; ++s) {
-    with += lean_toward_the_open(s, 0.4) / seeds;
-    without += lean_toward_the_open(s, 0.0) / seeds;
+// Until 2026-11-24 this test asserted the crown's lean (the mean leaf-ball x) over 3 seeds; it passed by the luck of
+// seeds 2 and 3. Over 16 seeds the crown leans *less* away from its neighbour with heliotropism (+0.011 m; 11 of 16
+// seeds), while its new shoots turn west in all 16 (docs/model.md, Fig. 16's deviation). The turn is asserted seed by
+// seed; the lean is printed, the deviation recorded.
+constexpr int fig16_seeds = 16;
+
+TEST(ConiferFindings, Fig16HeliotropismTurnsAConifersNewShootsTowardTheOpenSide) {
+  double lean_with = 0.0, lean_without = 0.0;
+  for (int s = 1; s <= fig16_seeds; ++s) {
+    const BesideANeighbour with = beside_a_neighbour(s, 0.4), without = beside_a_neighbour(s, 0.0);
+    EXPECT_LT(with.new_shoots_toward_east, without.new_shoots_toward_east) << "seed " << s;
+    std::cerr << "seed " << s << ": new shoots' mean direction x " << with.new_shoots_toward_east << " with I = 0.4, "
+              << without.new_shoots_toward_east << " with I = 0; crown lean " << with.crown_lean_m << " vs "
+              << without.crown_lean_m << " m\n";
+    lean_with += with.crown_lean_m / fig16_seeds;
+    lean_without += without.crown_lean_m / fig16_seeds;
   }
-  std::cerr << "mean leaf-ball x from the stem (neighbour at +1.5 m): I = 0.4 " << with << " m, I = 0 " << without
-            << " m\n";
-  // The lean is small (measured 2026-11-23: −0.046 vs −0.042 m): seed 001's droop re-sets every first-order chord
-  // to eq. 4 each year, so a bend survives only as a change of azimuth (docs/model.md, deviation). A margin of
-  // 0.02 m, chosen before measuring, did not hold; the direction does.
-  EXPECT_LT(with, without);
+  std::cerr << "recorded (deviation): mean leaf-ball x from the stem (neighbour at +1.5 m) over " << fig16_seeds
+            << " seeds: I = 0.4 " << lean_with << " m, I = 0 " << lean_without << " m\n";
 }
 
 }  // namespace
