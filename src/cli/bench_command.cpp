@@ -101,7 +101,7 @@ void add_bench_light_command(CLI::App& bench) {
   overrides->bias_correction =
       light->add_flag("--far-field-bias-correction,!--no-far-field-bias-correction",
                       options->parameters.far_field_bias_correction,
-                      std::string("Correct the far field's dark bias, or not (off by default, as in [light]: "
+                      std::string("Correct the far field's dark bias, or not (on by default, as in [light]: "
                                   "docs/light.md)") +
                           overrides_stand);
   light->add_option("--reference-exact-max", options->reference_exact_max,

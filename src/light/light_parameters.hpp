@@ -34,9 +34,9 @@ struct LightParameters {
   double far_field_table_mb = 512;  // memory cap of the far-field table; bigger stands get coarser cells
   double far_field_cell_m = 1.0;  // 2 m cells smear crowns and gaps: light 0.02 too low on average (docs/light.md)
   // The far field's dark bias corrected (docs/light.md "Far-field bias"): read it one cell beyond the cut-off
-  // and scale each cell's density by its foliage clumping index. Off by default: the stand's growth was
-  // calibrated against the uncorrected (darker) light, and is too fast with the correction until recalibrated.
-  bool far_field_bias_correction = false;
+  // and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
+  // light (docs/light.md "The corrected far field by default"); false gives the old, darker far field.
+  bool far_field_bias_correction = true;
 
   // Periodic stand edges: treat the plot as a torus for light (edge trees not unnaturally sunlit).
   bool periodic = false;

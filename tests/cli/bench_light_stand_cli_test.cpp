@@ -101,11 +101,11 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   ASSERT_EQ(own.cli.status, 0) << own.cli.output;
   const auto& own_parameters = own.json.at("stands").at(0).at("parameters");
   EXPECT_EQ(own_parameters.at("cutoff_m"), 3.0) << "no --cutoff: the scenario's";
-  EXPECT_EQ(own_parameters.at("far_field_bias_correction"), false);
+  EXPECT_EQ(own_parameters.at("far_field_bias_correction"), true) << "not in the scenario: the default";
   EXPECT_EQ(own_parameters.at("periodic"), false);
 
   const Bench given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
-                                                        " --cutoff 2 --far-field-bias-correction --periodic" +
+                                                        " --cutoff 2 --no-far-field-bias-correction --periodic" +
                                                         parameters_only);
   ASSERT_EQ(given.cli.status, 0) << given.cli.output;
   const auto& stands = given.json.at("stands");
@@ -114,7 +114,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(stands.at(0).at("balls"), 200);
   const auto& given_parameters = stands.at(1).at("parameters");
   EXPECT_EQ(given_parameters.at("cutoff_m"), 2.0) << "--cutoff 2 replaces the scenario's 3 m";
-  EXPECT_EQ(given_parameters.at("far_field_bias_correction"), true);
+  EXPECT_EQ(given_parameters.at("far_field_bias_correction"), false) << "--no-far-field-bias-correction";
   EXPECT_EQ(given_parameters.at("periodic"), true);
   EXPECT_EQ(given_parameters.at("far_field_cell_m"), 1.0) << "not given: the scenario's (the default)";
   EXPECT_EQ(given_parameters.at("sky_bands"), 8) << "not a flag: always the scenario's";

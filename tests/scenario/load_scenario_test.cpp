@@ -35,7 +35,7 @@ TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   EXPECT_EQ(s.light.sky_bands, 16);
   EXPECT_DOUBLE_EQ(s.light.transmittance, 0.5);
   EXPECT_FALSE(s.light.periodic);
-  EXPECT_FALSE(s.light.far_field_bias_correction);  // the light the growth is calibrated on
+  EXPECT_TRUE(s.light.far_field_bias_correction);  // the light the growth is set on
   EXPECT_DOUBLE_EQ(s.light.plot_x_max, 10);
   EXPECT_DOUBLE_EQ(s.light.plot_y_max, 10);
   EXPECT_TRUE(s.thinning.empty());

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """How the shoot rules' relative-light thresholds carry over from one light field to another (docs/light.md,
-"Why it is off by default").
+"The corrected far field by default").
 
   measure_shoot_light.py HELIOSTAND OUT_DIR [--light "KEY = VALUE" ...]
 
