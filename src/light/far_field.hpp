@@ -4,7 +4,7 @@
 // number of balls a ray hits per metre. For every cell centre and every sky patch, a table holds the optical
 // depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
 // ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
-// balls with mean K = tau. With LightParameters::far_field_bias_correction (off by default), each cell's density
+// balls with mean K = tau. With LightParameters::far_field_bias_correction (on by default), each cell's density
 // is scaled by its clumping index (light/foliage_clumping.hpp) and receivers read the table one cell beyond the
 // cut-off (start_distance); off, they read it at the cut-off, with the plain density. Both solvers read the same
 // table (double on the host, float on the device).

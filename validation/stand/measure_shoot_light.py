@@ -12,9 +12,10 @@ stand before any simulated year), so the balls pair one to one. It prints
 
   - the paired ratio corrected / uncorrected (median, quartiles): whether the correction scales relative light by
     one factor;
-  - for every relative-light threshold of the shoot rules (species defaults), the share of balls below it under the
-    uncorrected light and the value with the same share below it under the corrected light (quantile mapping):
-    the threshold that means, on the corrected light, what the default means on the uncorrected one.
+  - for every relative-light threshold of the shoot rules as judged on the uncorrected light (the Todomatsu defaults
+    until 2026-11-24), the share of balls below it under the uncorrected light and the value with the same share
+    below it under the corrected light (quantile mapping): the threshold that means, on the corrected light, what
+    the old value meant on the uncorrected one.
 
 Nothing before the first solve depends on a growth or shoot parameter, so this measures the light field alone.
 `--light` adds or replaces a key of [light] in both runs, e.g. --light "cutoff_m = 2.0".
@@ -32,7 +33,9 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import measure_light_share  # noqa: E402  (the scenario text: one simulated year, thinnings dropped)
 
-# The thresholds on relative light of the Todomatsu defaults (src/architecture/species.hpp).
+# The thresholds on relative light as judged on the uncorrected far field: the Todomatsu defaults until 2026-11-24.
+# The growth thresholds' defaults are now the values this script maps them to; death_threshold was set halfway
+# between its value here and the mapped one (src/architecture/species.hpp, docs/light.md).
 THRESHOLDS = [
     ("death_threshold - dither", 0.05),
     ("death_threshold", 0.15),
@@ -111,7 +114,7 @@ def main(argv):
           f"corrected {statistics.median(on):.4f}")
     print(f"paired ratio corrected / uncorrected: median {median:.3f}, quartiles {q1:.3f}-{q3:.3f}")
     on_sorted = sorted(on)
-    print("| threshold | default | share of balls below it, uncorrected | same share, corrected |")
+    print("| threshold | judged on uncorrected | share of balls below it, uncorrected | same share, corrected |")
     print("|---|---:|---:|---:|")
     for name, value in THRESHOLDS:
         share = share_below(off, value)
