@@ -94,13 +94,13 @@ TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
 // stands (--balls, combined with --stand) keep the command's own values.
 TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   const fs::path folder = scratch_folder("bench-light-stand-flags");
-  // its own cut-off, 3 m, not the command's default 4 m: which value a row used shows
-  const fs::path scenario = tiny_scenario(folder / "scenario.toml", "cutoff_m = 3.0\n");
+  // its own cut-off, 5 m, not the command's default (3 m): which value a row used shows
+  const fs::path scenario = tiny_scenario(folder / "scenario.toml", "cutoff_m = 5.0\n");
 
   const Bench own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
   ASSERT_EQ(own.cli.status, 0) << own.cli.output;
   const auto& own_parameters = own.json.at("stands").at(0).at("parameters");
-  EXPECT_EQ(own_parameters.at("cutoff_m"), 3.0) << "no --cutoff: the scenario's";
+  EXPECT_EQ(own_parameters.at("cutoff_m"), 5.0) << "no --cutoff: the scenario's";
   EXPECT_EQ(own_parameters.at("far_field_bias_correction"), true) << "not in the scenario: the default";
   EXPECT_EQ(own_parameters.at("periodic"), false);
 
@@ -113,7 +113,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_FALSE(stands.at(0).contains("stand"));
   EXPECT_EQ(stands.at(0).at("balls"), 200);
   const auto& given_parameters = stands.at(1).at("parameters");
-  EXPECT_EQ(given_parameters.at("cutoff_m"), 2.0) << "--cutoff 2 replaces the scenario's 3 m";
+  EXPECT_EQ(given_parameters.at("cutoff_m"), 2.0) << "--cutoff 2 replaces the scenario's 5 m";
   EXPECT_EQ(given_parameters.at("far_field_bias_correction"), false) << "--no-far-field-bias-correction";
   EXPECT_EQ(given_parameters.at("periodic"), true);
   EXPECT_EQ(given_parameters.at("far_field_cell_m"), 1.0) << "not given: the scenario's (the default)";

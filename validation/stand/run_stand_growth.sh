@@ -3,7 +3,8 @@
 # once heavily from below at 40) and judge them (check_stand_growth.py). CTest runs it at a small size.
 #   run_stand_growth.sh HELIOSTAND OUT_DIR [TREES] [SEED] [extra make_yield_stand.py options...]
 # The light numerics of the small size (8 x 16 sky patches, 2 m exact cut-off) are set here: the full-size
-# figures in docs/model.md use the defaults (16 x 32, 4 m) and more trees.
+# figures in docs/model.md use the defaults of their day (16 x 32 sky, 4 m cut-off; 3 m since 2026-11-24) and
+# more trees.
 set -eu
 heliostand=$1
 out=$2
