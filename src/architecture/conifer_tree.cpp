@@ -560,13 +560,19 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
   if (glm::length(hinge) < 1e-9) hinge = glm::cross(from, glm::dvec3{0.0, 1.0, 0.0});
   hinge = glm::normalize(hinge);
   const glm::dvec3 pivot = bent.base;
-  std::vector<char> moves(shoots_.size(), 0);
-  moves[shoot_index] = 1;
-  for (std::size_t i = shoot_index + 1; i < shoots_.size(); ++i)
-    if (shoots_[i].parent >= 0 && moves[shoots_[i].parent]) moves[i] = 1;
-  for (std::size_t i = 0; i < shoots_.size(); ++i) {
-    if (!moves[i]) continue;
-    if (static_cast<int>(i) != shoot_index) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);
+  // Parents precede their laterals, so the bent shoot's descendants all lie after it: only that tail is looked at.
+  // The light response bends every new shoot, and new shoots are the last in the list, so a bend costs the
+  // year's new shoots, not the whole crown (which made the light response a fifth of the example's time).
+  const std::size_t first = static_cast<std::size_t>(shoot_index);
+  std::vector<char> moves(shoots_.size() - first, 0);
+  moves[0] = 1;
+  for (std::size_t i = first + 1; i < shoots_.size(); ++i) {
+    const int parent = shoots_[i].parent;
+    if (parent >= shoot_index && moves[parent - shoot_index]) moves[i - first] = 1;
+  }
+  for (std::size_t i = first; i < shoots_.size(); ++i) {
+    if (!moves[i - first]) continue;
+    if (i != first) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);
     shoots_[i].tip = pivot + rotate(shoots_[i].tip - pivot, hinge, angle);
   }
 }

@@ -385,6 +385,43 @@ TEST(ConiferTree, BendingANewShootKeepsItsBaseAndLength) {
   for (int n : tree.new_shoot_indices()) EXPECT_EQ(tree.shoots()[n].year_formed, 8);
 }
 
+// Bending a shoot that already bears laterals carries them along rigidly (every shoot stays attached to its
+// bearer's tip) and moves nothing else, before it in the list or after it.
+TEST(ConiferTree, BendingABearingShootCarriesItsLateralsAndNothingElse) {
+  ConiferTree tree = grown(8);
+  const std::vector<Shoot> before = tree.shoots();
+  std::vector<char> descends(before.size(), 0);
+  int bent = -1;
+  for (std::size_t i = 0; i < before.size() && bent < 0; ++i)
+    if (before[i].order == 1)
+      for (std::size_t j = i + 1; j < before.size(); ++j)
+        if (before[j].parent == static_cast<int>(i)) bent = static_cast<int>(i);
+  ASSERT_GE(bent, 0) << "no first-order shoot bears another";
+  descends[bent] = 1;
+  for (std::size_t j = bent + 1; j < before.size(); ++j)
+    if (before[j].parent >= 0 && descends[before[j].parent]) descends[j] = 1;
+  ASSERT_GT(std::count(descends.begin(), descends.end(), 1), 2);
+  ASSERT_LT(bent + 1, static_cast<int>(before.size()) - 1);
+
+  tree.bend_shoot(bent, {0.0, 0.0, 1.0});
+  const auto& after = tree.shoots();
+  const glm::dvec3 pivot = before[bent].base;
+  int moved = 0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    if (!descends[i]) {
+      EXPECT_EQ(after[i].base, before[i].base) << "shoot " << i;
+      EXPECT_EQ(after[i].tip, before[i].tip) << "shoot " << i;
+      continue;
+    }
+    moved += after[i].tip != before[i].tip;
+    EXPECT_NEAR(glm::length(after[i].tip - pivot), glm::length(before[i].tip - pivot), 1e-9) << "shoot " << i;
+    if (static_cast<int>(i) != bent)
+      EXPECT_NEAR(glm::length(after[after[i].parent].tip - after[i].base), 0.0, 1e-9) << "shoot " << i;
+  }
+  EXPECT_EQ(moved, std::count(descends.begin(), descends.end(), 1));
+  EXPECT_NEAR(angle_from_vertical_deg(after[bent].tip - after[bent].base), 0.0, 1e-6);
+}
+
 TEST(ConiferTree, AThirtyFiveYearTreeStaysWithinAFewThousandLivingShoots) {
   const ConiferTree tree = grown(35);  // species defaults
   EXPECT_GT(tree.living_shoot_count(), 1000u);
