@@ -9,8 +9,8 @@
 //
 //   stand_light_validation OUT_DIR [--years N] [--cutoff-m M]
 //
-// --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m, default 4 m) in both runs: the
-// findings measured at a shorter, faster cut-off (docs/light.md, docs/performance.md).
+// --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m; default the model's, 3 m) in both
+// runs: the findings measured at another cut-off (docs/light.md "The 3 m cut-off by default").
 //
 // Writes both runs' full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
 // measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
