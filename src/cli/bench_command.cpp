@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
 #include "light/light_benchmark.hpp"
 #include "run/established_canopy.hpp"
@@ -41,7 +42,7 @@ void add_bench_stand_command(CLI::App& bench) {
       "stand", "Grow a scenario without the VTK series and report seconds per stage, tree-years/s and peak memory");
   stand->add_option("scenario", options->scenario, "Scenario TOML file")->required();
   stand->add_option("--years", options->years, "Years to simulate (overrides run.years)")->check(CLI::PositiveNumber);
-  stand->add_option("--seed", options->seed, "Random seed (overrides run.seed)");
+  stand->add_option("--seed", options->seed, "Random seed (overrides run.seed)")->check(seed_check());
   stand->add_option("--device", options->device, "auto | reference | opencl | opencl:N (overrides run.device)")
       ->check(check_device);
   stand->add_option("--tables", options->tables_folder,
@@ -84,7 +85,9 @@ void add_bench_light_command(CLI::App& bench) {
   light->add_option("--stand", *scenarios,
                     "A scenario whose stand is established as `grow` establishes it (year 0, no growth) and lit with "
                     "its own [light] parameters (repeatable; combines with --balls)");
-  light->add_option("--seed", options->seed, "Seed of the synthetic canopies")->capture_default_str();
+  light->add_option("--seed", options->seed, "Seed of the synthetic canopies")
+      ->check(seed_check())
+      ->capture_default_str();
   light->add_option("--device", options->opencl_device, "OpenCL device for the OpenCL rows: opencl, opencl:N or none")
       ->capture_default_str();
   const char* overrides_stand = " (synthetic stands; for a --stand, only when given: else its scenario's value)";

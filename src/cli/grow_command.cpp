@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
@@ -61,7 +62,7 @@ void add_grow_command(CLI::App& app, int& status) {
   command->add_option("scenario", arguments->scenario, "Scenario TOML file")->required();
   command->add_option("-o,--out", arguments->out, "Output folder")->required();
   command->add_flag("-f,--force", arguments->force, "Replace the contents of a non-empty output folder");
-  command->add_option("--seed", arguments->seed, "Random seed (overrides run.seed)");
+  command->add_option("--seed", arguments->seed, "Random seed (overrides run.seed)")->check(seed_check());
   command->add_option("--years", arguments->years, "Years to simulate (overrides run.years)")
       ->check(CLI::PositiveNumber);
   command->add_option("--device", arguments->device, "auto | reference | opencl | opencl:N (overrides run.device)")

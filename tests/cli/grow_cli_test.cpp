@@ -287,6 +287,15 @@ TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
   EXPECT_FALSE(fs::exists(folder));
 }
 
+// A negative --seed is refused like a negative run.seed in the scenario, not wrapped to 2^64 - 1.
+TEST(GrowCli, NegativeSeedIsBadInput) {
+  const auto folder = scratch_folder("tiny_negative_seed");
+  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --seed -1");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--seed"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(folder));
+}
+
 TEST(CheckCli, GoodScenarioPrintsASummary) {
   const auto run = run_cli("check " + source_path("stands/sobetsu/scenario.toml").string());
   EXPECT_EQ(run.status, 0) << run.output;
