@@ -29,7 +29,8 @@ struct LightParameters {
   // a voxel grid of leaf-ball density attenuates each patch direction (far field).
   // exact = true disables both (every ball vs every ball). 3 m since 2026-11-24: with the corrected far field the
   // light stays within 0.003 of exact and every stand check holds, at three quarters of the 4 m solve's cost
-  // (docs/light.md "The 3 m cut-off by default"); at 2 m the gap check fails.
+  // (docs/light.md "The 3 m cut-off by default"); at 2 m the gap check fails for seed 1 (a check that varies
+  // between seeds about as much: docs/light.md "Other seeds").
   bool exact = false;
   double cutoff_m = 3.0;
   bool far_field = true;           // false: nothing beyond the cut-off shades (to study the approximation)
