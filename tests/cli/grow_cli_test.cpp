@@ -279,21 +279,22 @@ TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
   EXPECT_FALSE(fs::exists(folder)) << "no output for a device that does not exist";
 }
 
-TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
-  const auto folder = scratch_folder("tiny_too_short");
-  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --years 2");
+// `grow` on the tiny stand with `flags` is bad input: exit 2, a message naming `named`, no output folder.
+static void expect_refused_before_output(const std::string& folder_name, const std::string& flags, const std::string& named) {
+  const auto folder = scratch_folder(folder_name);
+  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " " + flags);
   EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("run.years"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find(named), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(folder));
+}
+
+TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
+  expect_refused_before_output("tiny_too_short", "--years 2", "run.years");
 }
 
 // A negative --seed is refused like a negative run.seed in the scenario, not wrapped to 2^64 - 1.
 TEST(GrowCli, NegativeSeedIsBadInput) {
-  const auto folder = scratch_folder("tiny_negative_seed");
-  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --seed -1");
-  EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("--seed"), std::string::npos) << run.output;
-  EXPECT_FALSE(fs::exists(folder));
+  expect_refused_before_output("tiny_negative_seed", "--seed -1", "--seed");
 }
 
 TEST(CheckCli, GoodScenarioPrintsASummary) {
