@@ -416,11 +416,18 @@ void ConiferTree::drop_dead_branches() {
   if (any) remove_flagged(std::move(fallen));
 }
 
+// flags[k] is shoot first + k's flag (the tail of the shoot list from `first`); every descendant of a flagged shoot
+// gets flagged. A shoot's parent always precedes it in the list, so one forward pass reaches every descendant.
+void ConiferTree::flag_descendants(std::vector<char>& flags, std::size_t first) const {
+  for (std::size_t i = first + 1; i < shoots_.size(); ++i) {
+    const int parent = shoots_[i].parent;
+    if (parent >= static_cast<int>(first) && flags[parent - first]) flags[i - first] = 1;
+  }
+}
+
 // Removes the flagged shoots and everything they carry, then renumbers shoots and axes.
 void ConiferTree::remove_flagged(std::vector<char> removed) {
-  // A shoot's parent always precedes it in the list, so one forward pass reaches every descendant.
-  for (std::size_t i = 0; i < shoots_.size(); ++i)
-    if (shoots_[i].parent >= 0 && removed[shoots_[i].parent]) removed[i] = 1;
+  flag_descendants(removed, 0);
 
   std::vector<int> new_shoot_index(shoots_.size(), -1);
   std::vector<Shoot> kept;
@@ -560,16 +567,13 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
   if (glm::length(hinge) < 1e-9) hinge = glm::cross(from, glm::dvec3{0.0, 1.0, 0.0});
   hinge = glm::normalize(hinge);
   const glm::dvec3 pivot = bent.base;
-  // Parents precede their laterals, so the bent shoot's descendants all lie after it: only that tail is looked at.
-  // The light response bends every new shoot, and new shoots are the last in the list, so a bend costs the
-  // year's new shoots, not the whole crown (which made the light response a fifth of the example's time).
+  // The bent shoot's descendants all lie after it: only that tail is looked at. The light response bends every
+  // new shoot, and new shoots are the last in the list, so a bend costs the year's new shoots, not the whole
+  // crown (which made the light response a fifth of the example's time).
   const std::size_t first = static_cast<std::size_t>(shoot_index);
   std::vector<char> moves(shoots_.size() - first, 0);
   moves[0] = 1;
-  for (std::size_t i = first + 1; i < shoots_.size(); ++i) {
-    const int parent = shoots_[i].parent;
-    if (parent >= shoot_index && moves[parent - shoot_index]) moves[i - first] = 1;
-  }
+  flag_descendants(moves, first);
   for (std::size_t i = first; i < shoots_.size(); ++i) {
     if (!moves[i - first]) continue;
     if (i != first) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);

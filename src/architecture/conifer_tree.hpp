@@ -128,6 +128,7 @@ class ConiferTree {
   void kill_axis(int axis_index);
   void droop_first_order_branches();
   void drop_dead_branches();
+  void flag_descendants(std::vector<char>& flags, std::size_t first) const;
   void remove_flagged(std::vector<char> removed);
   void fit_lists_to_size();
   void update_radii();

@@ -280,7 +280,8 @@ TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
 }
 
 // `grow` on the tiny stand with `flags` is bad input: exit 2, a message naming `named`, no output folder.
-static void expect_refused_before_output(const std::string& folder_name, const std::string& flags, const std::string& named) {
+static void expect_refused_before_output(const std::string& folder_name, const std::string& flags,
+                                         const std::string& named) {
   const auto folder = scratch_folder(folder_name);
   const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " " + flags);
   EXPECT_EQ(run.status, 2) << run.output;

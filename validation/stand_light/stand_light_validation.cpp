@@ -81,21 +81,22 @@ std::pair<StandRecord, StandRecord> grow(const Scenario& scenario, const fs::pat
   return records;
 }
 
-struct RunSize {
+// What a run of this validation is grown with besides its CI size: years, the light's cut-off and the seed.
+struct FindingRun {
   int years = 10;
   double cutoff_m = LightParameters{}.cutoff_m;
   std::optional<std::uint64_t> seed;  // unset: each scenario's own
 };
 
-void make_ci_sized(Scenario& scenario, RunSize size) {
+void make_ci_sized(Scenario& scenario, FindingRun settings) {
   scenario.roots.enabled = false;
-  scenario.light.cutoff_m = size.cutoff_m;
+  scenario.light.cutoff_m = settings.cutoff_m;
   scenario.light.sky_bands = 8;
   scenario.light.sky_sectors = 16;
-  const int end_age = scenario.stand.age_at_survey_years + size.years;
+  const int end_age = scenario.stand.age_at_survey_years + settings.years;
   std::erase_if(scenario.thinning, [&](const ThinningEvent& e) { return e.age_years > end_age; });
-  scenario.set_years(size.years);
-  if (size.seed) scenario.set_seed(*size.seed);
+  scenario.set_years(settings.years);
+  if (settings.seed) scenario.set_seed(*settings.seed);
 }
 
 // Farthest reach of the foliage from the stem along the horizontal unit vector `toward`.
@@ -114,9 +115,9 @@ struct Finding {
 
 constexpr double gap_neighbour_distance_m = 4.0;  // residual trees this close to a removed stem border its gap
 
-Finding gap_regrowth(const fs::path& source, const fs::path& out, RunSize size, std::string& report) {
+Finding gap_regrowth(const fs::path& source, const fs::path& out, FindingRun settings, std::string& report) {
   Scenario thinned = load_scenario(source / "stands" / "sobetsu" / "scenario.toml");
-  make_ci_sized(thinned, size);
+  make_ci_sized(thinned, settings);
   Scenario control = thinned;
   control.thinning.clear();
   const StandRecord with_gaps = grow(thinned, out / "gap_thinned").second;
@@ -182,9 +183,9 @@ fs::path write_dense_plantation(const fs::path& folder) {
   return folder / "scenario.toml";
 }
 
-Finding self_thinning(const fs::path& out, RunSize size, std::string& report) {
+Finding self_thinning(const fs::path& out, FindingRun settings, std::string& report) {
   Scenario dense = load_scenario(write_dense_plantation(out / "self_thinning_input"));
-  make_ci_sized(dense, size);
+  make_ci_sized(dense, settings);
   const auto [start, end] = grow(dense, out / "self_thinning");
 
   std::map<int, int> deaths_by_age;
@@ -219,12 +220,12 @@ Finding self_thinning(const fs::path& out, RunSize size, std::string& report) {
 int main(int argc, char** argv) {
   CLI::App app{"Seed 000's light response at stand scale: gap regrowth and self-thinning"};
   fs::path out;
-  RunSize size;
+  FindingRun settings;
   app.add_option("OUT_DIR", out, "folder for both runs' outputs and stand_light.md")->required();
-  app.add_option("--years", size.years, "years grown in each run")->check(CLI::Range(1, 200));
-  app.add_option("--cutoff-m", size.cutoff_m, "near-field cut-off of the light (m)")
+  app.add_option("--years", settings.years, "years grown in each run")->check(CLI::Range(1, 200));
+  app.add_option("--cutoff-m", settings.cutoff_m, "near-field cut-off of the light (m)")
       ->check(CLI::Range(0.5, 50.0));
-  app.add_option("--seed", size.seed, "seed of both runs (default: each scenario's own)")
+  app.add_option("--seed", settings.seed, "seed of both runs (default: each scenario's own)")
       ->check(seed_check());
   try {
     app.parse(argc, argv);
@@ -235,11 +236,11 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
-                       fmt::format("{:g} m, seed {}.\n\n", size.cutoff_m,
-                                   size.seed ? std::to_string(*size.seed) : "each scenario's own");
+                       fmt::format("{:g} m, seed {}.\n\n", settings.cutoff_m,
+                                   settings.seed ? std::to_string(*settings.seed) : "each scenario's own");
   std::vector<Finding> findings;
-  findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, size, report));
-  findings.push_back(self_thinning(out, size, report));
+  findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, settings, report));
+  findings.push_back(self_thinning(out, settings, report));
   std::ofstream(out / "stand_light.md") << report;
   int failed = 0;
   for (const Finding& f : findings) {
