@@ -3,6 +3,12 @@
 # checks the images show something; the one-step view is checked on it too. Reported as skipped (exit 77) where ParaView, xvfb or apt are missing.
 # The X server the render tests share: cmake/PvbatchRenderTests.cmake.
 include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
+# xvfb.sh must wait for a server that is slow to exec (a CI run failed in that window): its own server, no fixture.
+add_test(NAME paraview.xvfb.slow_start
+         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/check_xvfb_slow_start.sh
+                 ${PROJECT_BINARY_DIR}/tests/paraview/xvfb_slow_start)
+set_tests_properties(paraview.xvfb.slow_start PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "paraview")
+
 add_test(NAME io.paraview.write_tiny_stand
          COMMAND heliostand_tests --gtest_also_run_disabled_tests --gtest_filter=ParaViewFixture.DISABLED_WriteTinyStand)
 set_tests_properties(io.paraview.write_tiny_stand PROPERTIES FIXTURES_SETUP heliostand_tiny_stand_series)

@@ -24,13 +24,18 @@ usage() { echo "usage: $0 start|stop DIR" >&2; exit 2; }
 action=$1
 dir=$2
 
-# True while PID is an Xvfb started by this script (not a reused pid) that has not exited yet. A server that
-# has exited but was not yet reaped by its parent (a zombie) counts as gone: it has already removed its socket.
+# True while process PID exists and has not exited. One that has exited but was not yet reaped by its parent
+# (a zombie) counts as gone: an Xvfb in that state has already removed its socket.
+alive() {
+  state=$(sed 's/^.*) //' "/proc/$1/stat" 2>/dev/null | cut -c1)
+  [ -n "$state" ] && [ "$state" != Z ]
+}
+
+# True while PID is an Xvfb started by this script (not a reused pid) that has not exited yet.
 running_xvfb() {
   [ -r "/proc/$1/cmdline" ] || return 1
   tr '\0' ' ' < "/proc/$1/cmdline" | grep -q '^Xvfb -displayfd ' || return 1
-  state=$(sed 's/^.*) //' "/proc/$1/stat" 2>/dev/null | cut -c1) || return 1
-  [ "$state" != Z ]
+  alive "$1"
 }
 
 stop_server() {
@@ -70,9 +75,12 @@ start_server() {
     3>"$number_file" </dev/null >"$dir/xvfb.log" 2>&1 &
   echo $! > "$dir/pid"
   waited=0
-  # Xvfb writes the number, then a newline, once it accepts connections.
+  # Xvfb writes the number, then a newline, once it accepts connections. Until then the process is only asked
+  # to be alive, not to be Xvfb yet: between the fork and the exec it is still this shell (its command line is
+  # this script's), and asking for Xvfb's there failed a CI run (2026-11-24; check_xvfb_slow_start.sh
+  # makes that window a second long).
   until [ "$(wc -l < "$number_file")" -ge 1 ]; do
-    running_xvfb "$(cat "$dir/pid")" || { cat "$dir/xvfb.log" >&2; echo "error: Xvfb did not start" >&2; exit 1; }
+    alive "$(cat "$dir/pid")" || { cat "$dir/xvfb.log" >&2; echo "error: Xvfb did not start" >&2; exit 1; }
     waited=$((waited + 1))
     [ "$waited" -le 600 ] || { stop_server; echo "error: Xvfb gave no display within 60 s" >&2; exit 1; }
     sleep 0.1
