@@ -2,7 +2,8 @@
 // balls: (x, y, z, radius) relative to a stand origin chosen by the host (keeps float precision).
 // patches: (N(h,v), S(h,v)); b0: B0 per patch. Output per receiver: (light vector, light).
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
-// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), AXIS_STRIDE (below), and
+// Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), AXIS_STRIDE (below), FAR_ROW
+// (far_field.cl), and
 // BALANCED_LIGHT_FRACTION, made by the host from light_sum.hpp's balanced_light_fraction (the one copy: both
 // backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
@@ -23,6 +24,9 @@
 // padding entries, so that eight patches read from any patch of the sky stay inside the arrays.
 #if AXIS_STRIDE < PATCH_COUNT + 7
 #error "AXIS_STRIDE leaves no room for a run of eight patches from the last one"
+#endif
+#if FAR_ROW > AXIS_STRIDE || FAR_ROW % 8 != 0
+#error "far_field_attenuate writes whole runs of eight patches of a FAR_ROW into log_b"
 #endif
 
 // The ray test of the reference solver (half-line from the receiver along n hits the ball at offset d: in front,
@@ -217,18 +221,55 @@ __kernel void light_each_alone(__global const float4* balls, __global const int*
   out[i] = light_sample(log_b, patches, b0);
 }
 
+// The far field of a receiver at `at`: log(B) -= (1 - t) tau for every patch, tau interpolated in the table laid
+// out by cell (far_field_by_cell), which holds each cell's optical depth from FarField::start_distance outward.
+// Every patch is read at the receiver's own position, so one set of trilinear weights and eight corner rows serve
+// them all, eight patches at a time; the corners and the arithmetic are those of grid_sample_layer8.
+inline void far_field_attenuate(float* log_b, __global const float* by_cell, float3 at, float3 origin, float3 cell,
+                                int4 dims, int periodic, float one_minus_t) {
+  if (any(grid_outside8((float8)(at.x), (float8)(at.y), (float8)(at.z), origin, cell, dims, periodic))) return;
+  const float3 u = (at - origin) / cell - 0.5f;
+  const float3 base = floor(u);
+  const float3 f = u - base;
+  int lox = (int)base.x, hix = lox + 1, loy = (int)base.y, hiy = loy + 1;
+  int loz = clamp((int)base.z, 0, dims.z - 1), hiz = clamp((int)base.z + 1, 0, dims.z - 1);
+  if (periodic) {
+    lox = wrap_cell(lox, dims.x), hix = wrap_cell(hix, dims.x), loy = wrap_cell(loy, dims.y), hiy = wrap_cell(hiy, dims.y);
+  } else {
+    lox = clamp(lox, 0, dims.x - 1), hix = clamp(hix, 0, dims.x - 1);
+    loy = clamp(loy, 0, dims.y - 1), hiy = clamp(hiy, 0, dims.y - 1);
+  }
+  const size_t row00 = ((size_t)loz * dims.y + loy) * dims.x, row10 = ((size_t)loz * dims.y + hiy) * dims.x;
+  const size_t row01 = ((size_t)hiz * dims.y + loy) * dims.x, row11 = ((size_t)hiz * dims.y + hiy) * dims.x;
+  __global const float* v0 = by_cell + (row00 + lox) * FAR_ROW;
+  __global const float* v1 = by_cell + (row00 + hix) * FAR_ROW;
+  __global const float* v2 = by_cell + (row10 + lox) * FAR_ROW;
+  __global const float* v3 = by_cell + (row10 + hix) * FAR_ROW;
+  __global const float* v4 = by_cell + (row01 + lox) * FAR_ROW;
+  __global const float* v5 = by_cell + (row01 + hix) * FAR_ROW;
+  __global const float* v6 = by_cell + (row11 + lox) * FAR_ROW;
+  __global const float* v7 = by_cell + (row11 + hix) * FAR_ROW;
+  for (int p = 0; p < FAR_ROW; p += 8) {
+    const float8 c00 = mix(vload8(0, v0 + p), vload8(0, v1 + p), f.x);
+    const float8 c10 = mix(vload8(0, v2 + p), vload8(0, v3 + p), f.x);
+    const float8 c01 = mix(vload8(0, v4 + p), vload8(0, v5 + p), f.x);
+    const float8 c11 = mix(vload8(0, v6 + p), vload8(0, v7 + p), f.x);
+    const float8 tau = mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+    vstore8(vload8(0, log_b + p) - one_minus_t * tau, 0, log_b + p);  // padding lanes: past the last patch, unused
+  }
+}
+
 // Culled: receivers come in tile order; each reads its tile's candidate list (CSR), keeps the occluders whose
 // centre lies within the cut-off of its own (the reference solver's test, in float), then adds the far-field
-// optical depth from `far_start` outward (table [patch][cell]), attenuating by exp(-(1 - t) tau). `far_start` is
-// FarField::start_distance: the cut-off, or one cell beyond it with LightParameters::far_field_bias_correction
-// (whose clumping index is already in the table's density).
+// optical depth (far_field_attenuate), attenuating by exp(-(1 - t) tau); with
+// LightParameters::far_field_bias_correction the clumping index is already in the table's density.
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
                            __global const int* receiver_tiles, const int receiver_count,
                            __global const int* candidate_start, __global const int* candidates,
                            __global const float4* patches, __global const float* axes, __global const float* b0,
-                           const float log_t, __global const float* far_depth, const float4 grid_origin,
+                           const float log_t, __global const float* far_by_cell, const float4 grid_origin,
                            const float4 grid_cell, const int4 grid_dims, const int periodic, const float cutoff,
-                           const float far_start, const float one_minus_t, __global float4* out) {
+                           const float one_minus_t, __global float4* out) {
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
   const int self = receivers[slot];
@@ -247,20 +288,6 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
     shade_by_ball(&batch, log_b, axes, d, ball.w, log_t);
   }
   batch_finish(&batch, log_b, axes, log_t);
-  // Eight patches at a time, each lane in its patch's table (a lane past the last patch repeats it, unused).
-  const size_t cells = (size_t)grid_dims.x * grid_dims.y * grid_dims.z;
-  for (int first = 0; first < PATCH_COUNT; first += 8) {
-    float x[8], y[8], z[8];
-    int table[8];
-    for (int l = 0; l < 8; ++l) {
-      const int p = min(first + l, PATCH_COUNT - 1);
-      const float3 start = centre + far_start * patches[p].xyz;
-      x[l] = start.x, y[l] = start.y, z[l] = start.z, table[l] = p;
-    }
-    float tau[8];
-    vstore8(grid_sample8(far_depth, vload8(0, table), cells, vload8(0, x), vload8(0, y), vload8(0, z),
-                         grid_origin.xyz, grid_cell.xyz, grid_dims, periodic), 0, tau);
-    for (int l = 0; l < 8 && first + l < PATCH_COUNT; ++l) log_b[first + l] -= one_minus_t * tau[l];
-  }
+  far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }

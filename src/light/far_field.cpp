@@ -62,6 +62,19 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, st
   return grid;
 }
 
+// The near/far hand-over. The near field ray-tests every ball whose centre lies within the cut-off; the far
+// field holds every ball, smoothed: the cloud-in-cell deposit puts a ball on the cell centres within one cell of
+// it and the lookup interpolates between cell centres, so a ball reaches the table up to two cells away. Read
+// right at the cut-off, the table still holds much of the near balls just inside it, which the ray test has
+// already counted; at a canopy's top and bottom, where a receiver's rays leave the foliage, nothing beyond
+// makes up for it, and the light comes out too dark. The bias correction starts one cell further out: that drops
+// most of the double count and misses about as much of the balls just beyond the cut-off (docs/light.md). Off,
+// the table starts at the cut-off.
+double far_field_start(const VoxelGrid& grid, const LightParameters& p) {
+  if (!p.far_field_bias_correction) return p.cutoff_m;
+  return p.cutoff_m + std::max({grid.cell.x, grid.cell.y, grid.cell.z});
+}
+
 }  // namespace
 
 bool VoxelGrid::outside(const glm::dvec3& point) const {
@@ -75,7 +88,8 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
                    bool with_table)
     : grid_(grid_around(occluders, p, sky.patches().size())),
       transmittance_(p.transmittance),
-      bias_corrected_(p.far_field_bias_correction) {
+      bias_corrected_(p.far_field_bias_correction),
+      start_m_(far_field_start(grid_, p)) {
   // Longest useful path: horizontal rays in a periodic stand would circle the torus forever.
   max_path_m_ = 4.0 * glm::length(glm::dvec3(grid_.dims) * grid_.cell) + 1.0;
   density_.assign(grid_.cell_count(), 0.0);
@@ -120,10 +134,11 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
     });
 }
 
-// Layer by layer against the light: tau at a cell centre = the integral of sigma up to the next layer's
-// mid-plane plus tau already known there (bilinear in that layer). Each cell costs ~1/|N.z| samples
+// Layer by layer against the light: tau at a cell centre c = the integral of sigma from c + s N to
+// c + (s + reach) N, where c + reach N lies on the next layer's mid-plane, plus tau already known there
+// (bilinear in that layer), which by definition starts at c + (reach + s) N. Each cell costs ~1/|N.z| samples
 // instead of a march to the edge of the canopy. z never wraps, so this holds for periodic plots too.
-// (Band centres never lie on the horizon for even V, so N.z != 0.)
+// (Band centres never lie on the horizon for even V, so N.z != 0.) s = start_distance().
 void FarField::sweep(const glm::dvec3& direction, std::span<double> depth) const {
   const int step_z = direction.z > 0 ? 1 : -1;
   const int first = direction.z > 0 ? grid_.dims.z - 1 : 0;
@@ -132,12 +147,13 @@ void FarField::sweep(const glm::dvec3& direction, std::span<double> depth) const
     for (int y = 0; y < grid_.dims.y; ++y)
       for (int x = 0; x < grid_.dims.x; ++x) {
         const glm::dvec3 start = grid_.centre(x, y, z);
+        const glm::dvec3 far_start = start + start_m_ * direction;
         const int next = z + step_z;
         double tau;
         if (next < 0 || next >= grid_.dims.z) {
-          tau = march(start, direction);  // last layer: at most half a layer to the grid face
+          tau = march(far_start, direction);  // last layer: at most half a layer to the grid face
         } else {
-          tau = march(start, direction, reach);
+          tau = march(far_start, direction, reach);
           const glm::dvec3 landing = start + reach * direction;
           tau += grid_.outside(landing) ? 0.0 : grid_.sample_layer(std::span<const double>(depth), landing, next);
         }
@@ -165,19 +181,6 @@ double FarField::march(const glm::dvec3& point, const glm::dvec3& direction, dou
   return tau;
 }
 
-// The near/far hand-over. The near field ray-tests every ball whose centre lies within the cut-off; the far
-// field holds every ball, smoothed: the cloud-in-cell deposit puts a ball on the cell centres within one cell of
-// it and the lookup interpolates between cell centres, so a ball reaches the table up to two cells away. Read
-// right at the cut-off, the table still holds much of the near balls just inside it, which the ray test has
-// already counted; at a canopy's top and bottom, where a receiver's rays leave the foliage, nothing beyond
-// makes up for it, and the light comes out too dark. The bias correction reads one cell further out: that drops
-// most of the double count and misses about as much of the balls just beyond the cut-off (docs/light.md). Off
-// (the default, which the growth is calibrated on), the table is read at the cut-off.
-double FarField::start_distance(double cutoff_m) const {
-  if (!bias_corrected_) return cutoff_m;
-  return cutoff_m + std::max({grid_.cell.x, grid_.cell.y, grid_.cell.z});
-}
-
 // Clumped foliage lets more light through than the same density placed at random: scale each cell's density by
 // its clumping index (light/foliage_clumping.hpp), computed from the balls' actual shadows.
 void FarField::apply_clumping_index(const OccluderSet& occluders) {
@@ -185,9 +188,9 @@ void FarField::apply_clumping_index(const OccluderSet& occluders) {
   for (std::size_t c = 0; c < density_.size(); ++c) density_[c] *= omega[c];
 }
 
-double FarField::optical_depth(const glm::dvec3& point, int patch) const {
+double FarField::optical_depth(const glm::dvec3& receiver, int patch) const {
   const std::span<const float> table(depth_.data() + std::size_t(patch) * grid_.cell_count(), grid_.cell_count());
-  return grid_.sample(table, point);
+  return grid_.sample(table, receiver);
 }
 
 }  // namespace heliostand

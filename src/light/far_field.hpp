@@ -2,12 +2,19 @@
 // The far field: occluders beyond the near-field cut-off, seen as a smooth density of leaf-ball
 // cross-section on a coarse voxel grid. Each cell holds sigma = sum(pi r^2) / cell volume (1/m): the expected
 // number of balls a ray hits per metre. For every cell centre and every sky patch, a table holds the optical
-// depth tau = integral of sigma along the patch's direction from that point outward (the expected number of
-// ball hits). A receiver's patch then gets the factor exp(-(1 - t) tau): the mean of t^K over Poisson-placed
-// balls with mean K = tau. With LightParameters::far_field_bias_correction (on by default), each cell's density
-// is scaled by its clumping index (light/foliage_clumping.hpp) and receivers read the table one cell beyond the
-// cut-off (start_distance); off, they read it at the cut-off, with the plain density. Both solvers read the same
-// table (double on the host, float on the device).
+// depth tau = integral of sigma along the patch's direction outward from start_distance() beyond that point
+// (the expected number of ball hits past the near field). A receiver's patch then gets the factor
+// exp(-(1 - t) tau): the mean of t^K over Poisson-placed balls with mean K = tau. With
+// LightParameters::far_field_bias_correction (on by default), each cell's density is scaled by its clumping
+// index (light/foliage_clumping.hpp) and the table starts one cell beyond the cut-off; off, at the cut-off, with
+// the plain density. Both solvers read the same table (double on the host, float on the device).
+//
+// Why the table is indexed by the receiver, not by the point where its ray leaves the near field: every patch of
+// a receiver is then read at the receiver's own position, so one set of interpolation weights and the same eight
+// corner cells serve all V x H patches (the OpenCL kernel reads them as eight contiguous rows, one per corner).
+// Read at the start point instead, each patch fell in other cells of its own table: V x H scattered lookups per
+// receiver, a third of the culled solve at 10^6 balls (docs/performance.md "The far field read where the
+// receiver is").
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -48,12 +55,13 @@ class FarField {
   const VoxelGrid& grid() const { return grid_; }
   const std::vector<double>& density() const { return density_; }  // sigma (corrected: Omega * sigma) per cell, 1/m
   const std::vector<float>& optical_depth() const { return depth_; }      // [patch][cell]
-  // Expected number of ball hits along patch `patch`'s direction from `point` outward.
-  double optical_depth(const glm::dvec3& point, int patch) const;
-  // Distance from a receiver, along each patch direction, at which it reads the far field: the near-field
+  // Expected number of ball hits along patch `patch`'s direction beyond start_distance() from `receiver`
+  // (interpolated between the cell centres around the receiver).
+  double optical_depth(const glm::dvec3& receiver, int patch) const;
+  // Distance from a receiver, along each patch direction, at which the far field begins: the near-field
   // cut-off, or with the bias correction one cell beyond it, where the smoothed density of the near-field balls
   // (already ray-tested) has faded.
-  double start_distance(double cutoff_m) const;
+  double start_distance() const { return start_m_; }
   // tau integrated directly from the density (what the table approximates); used by the table and by tests.
   // (The table itself is built layer by layer, see sweep().) Marches at most `length` metres.
   double march(const glm::dvec3& point, const glm::dvec3& direction, double length = 1e300) const;
@@ -69,6 +77,7 @@ class FarField {
   VoxelGrid grid_;
   double transmittance_;
   bool bias_corrected_;
+  double start_m_;
   double max_path_m_;
   std::vector<double> density_;
   std::vector<float> depth_;

@@ -38,11 +38,15 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
                     const_cast<T*>(data.data()));
 }
 
-// The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl); it
-// stays there for the culled kernel.
-cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const FarField& far, std::size_t patch_count,
-                           const cl::Buffer& patches, const cl_float4& origin, const cl_float4& cell,
-                           const cl_int4& dims, bool periodic) {
+// Entries per cell of the far-field table as the culled kernel reads it: every patch, rounded up to eight
+// (cl/far_field.cl, far_field_by_cell). The kernels get it as the build option FAR_ROW.
+std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8; }
+
+// The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
+// out by cell; it stays there for the culled kernel.
+cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
+                           std::size_t patch_count, const cl::Buffer& patches, const cl_float4& origin,
+                           const cl_float4& cell, const cl_int4& dims, bool periodic) {
   const auto& context = device.context;
   const std::vector<float> density(far.density().begin(), far.density().end());
   const cl::Buffer density_buffer = read_only(context, density);
@@ -61,13 +65,20 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, const 
   const int layer_arg = arg++;
   k.setArg(arg++, float(far.max_path_m()));
   k.setArg(arg++, float(far.saturated_hits()));
+  k.setArg(arg++, float(far.start_distance()));
   // Each layer reads the one swept before it: one launch per layer, in order on the in-order queue.
   for (int layer = 0; layer < far.grid().dims.z; ++layer) {
     k.setArg(layer_arg, cl_int(layer));
     compute::launch(device, k, column_items, patch_count);
   }
+  const std::size_t row = far_row(patch_count);
+  cl::Buffer table(context, CL_MEM_READ_WRITE, cells * row * sizeof(float));
+  by_cell.setArg(0, depth);
+  by_cell.setArg(1, table);
+  by_cell.setArg(2, cl_int(cells));
+  compute::launch(device, by_cell, (cells + 7) / 8, row / 8);
   device.queue.finish();
-  return depth;
+  return table;  // the swept layout is released here: only one of the two stays on the device
 }
 
 // Float keeps ~7 digits: coordinates go to the device relative to the middle of their stand (or group), so
@@ -117,6 +128,7 @@ struct OpenCLLightSolver::Device {
   cl::Kernel exact;
   cl::Kernel culled;
   cl::Kernel far_field_layer;
+  cl::Kernel far_field_by_cell;
   cl::Kernel each_alone;
 };
 
@@ -129,12 +141,14 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
                            .define("SKY_BANDS", parameters_.sky_bands)
                            .define("SKY_SECTORS", parameters_.sky_sectors)
                            .define("AXIS_STRIDE", int(axis_stride(parameters_.sky_bands * parameters_.sky_sectors)))
+                           .define("FAR_ROW", int(far_row(parameters_.sky_bands * parameters_.sky_sectors)))
                            .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction);
   const std::string source = compute::kernel_source("far_field.cl") + compute::kernel_source("light.cl");
   device_->program = compute::build_program(device_->cl, source, options.text());
   device_->exact = cl::Kernel(device_->program, "light_exact");
   device_->culled = cl::Kernel(device_->program, "light_culled");
   device_->far_field_layer = cl::Kernel(device_->program, "far_field_layer");
+  device_->far_field_by_cell = cl::Kernel(device_->program, "far_field_by_cell");
   device_->each_alone = cl::Kernel(device_->program, "light_each_alone");
 }
 
@@ -274,9 +288,10 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   const cl_int4 grid_dims_arg = {{grid.dims.x, grid.dims.y, grid.dims.z, 0}};
   const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
   const cl::Buffer depth_buffer =
-      far ? sweep_far_field(device_->cl, device_->far_field_layer, *far, sky.patches().size(), patches_buffer,
-                            grid_origin_arg, grid_cell_arg, grid_dims_arg, torus.periodic)
-          : read_only(context, std::vector<float>(sky.patches().size(), 0.0f));  // one empty cell
+      far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
+                            sky.patches().size(), patches_buffer, grid_origin_arg, grid_cell_arg, grid_dims_arg,
+                            torus.periodic)
+          : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
   statistics_.far_field_seconds = seconds_since(part_start);
   statistics_.setup_seconds = seconds_since(setup_start);
 
@@ -322,7 +337,6 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, grid_dims_arg);
     k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
     k.setArg(arg++, float(parameters_.cutoff_m));
-    k.setArg(arg++, float(far ? far->start_distance(parameters_.cutoff_m) : parameters_.cutoff_m));
     k.setArg(arg++, far_attenuation);
     k.setArg(arg++, out);
     compute::launch(device_->cl, k, count);

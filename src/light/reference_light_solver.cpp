@@ -33,10 +33,10 @@ void for_each_exact_occluder(const OccluderSet& set, const PlotTorus& torus, std
 }
 
 // Culled mode, one receiver: its near-field occluders ray-tested per patch, then the far field from
-// FarField::start_distance (the cut-off; one cell beyond it with the bias correction).
+// FarField::start_distance (the cut-off; one cell beyond it with the bias correction) outward.
 LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t> occluders,
                           const std::optional<FarField>& far, const glm::dvec3& centre, const CelestialSphere& sky,
-                          const PlotTorus& torus, double t, double cutoff_m) {
+                          const PlotTorus& torus, double t) {
   std::vector<double> intensity;
   intensity.reserve(sky.patches().size());
   for (std::size_t q = 0; q < sky.patches().size(); ++q) {
@@ -44,10 +44,7 @@ LightSample culled_sample(const OccluderSet& set, std::span<const std::uint32_t>
     double b = patch.initial_intensity;
     for (auto j : occluders)
       if (ray_hits_ball(centre, patch.direction, set.centres[j], set.radii[j])) b *= t;
-    if (far) {
-      const glm::dvec3 far_start = torus.wrap(centre + far->start_distance(cutoff_m) * patch.direction);
-      b *= std::exp(-(1.0 - t) * far->optical_depth(far_start, static_cast<int>(q)));
-    }
+    if (far) b *= std::exp(-(1.0 - t) * far->optical_depth(torus.wrap(centre), static_cast<int>(q)));
     intensity.push_back(b);
   }
   return light_sample(sky, intensity);
@@ -111,8 +108,7 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
         if (search.within_cutoff(receivers[slot], near.occluders[c])) occluders.push_back(near.occluders[c]);
       candidate_total += occluders.size();
       scanned_total += near.start[tile + 1] - near.start[tile];
-      samples[slot] = culled_sample(set, occluders, far, set.centres[receivers[slot]], sky, torus, t,
-                                     parameters_.cutoff_m);
+      samples[slot] = culled_sample(set, occluders, far, set.centres[receivers[slot]], sky, torus, t);
     }
   statistics_.mean_candidates = receivers.empty() ? 0.0 : double(candidate_total) / receivers.size();
   statistics_.mean_tile_candidates = receivers.empty() ? 0.0 : double(scanned_total) / receivers.size();
