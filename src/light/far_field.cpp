@@ -4,8 +4,6 @@
 #include <cmath>
 #include <thread>
 
-#include <spdlog/spdlog.h>
-
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -48,11 +46,8 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, st
   const double budget_cells = p.far_field_table_mb * 1e6 / (4.0 * patch_count);
   double cell_m = p.far_field_cell_m;
   const double volume = (extent.x + cell_m) * (extent.y + cell_m) * (extent.z + cell_m);
-  if (volume / (cell_m * cell_m * cell_m) > budget_cells) {
-    cell_m = std::cbrt(volume / budget_cells) * 1.05;
-    spdlog::warn("light far field: {:.3g} m cells would exceed {} MB; using {:.3g} m cells", p.far_field_cell_m,
-                 p.far_field_table_mb, cell_m);
-  }
+  // Said once per run by whoever runs the solves (LightSolveStatistics::far_field_cell_m), not once per solve.
+  if (volume / (cell_m * cell_m * cell_m) > budget_cells) cell_m = std::cbrt(volume / budget_cells) * 1.05;
   for (int axis = 0; axis < 3; ++axis) {
     grid.dims[axis] = std::max(1, static_cast<int>(std::ceil(extent[axis] / cell_m - 1e-9)));
     // periodic x/y: whole cells per plot; otherwise cells of the asked size (the box grows to fit)

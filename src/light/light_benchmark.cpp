@@ -28,6 +28,7 @@ struct Run {
   double setup_seconds = 0;
   double search_seconds = 0;     // parts of setup_seconds: candidate search, far-field table
   double far_field_seconds = 0;
+  double far_field_cell_m = 0;   // the far field's cell edge (coarser than asked when the table hit its cap)
   double mean_candidates = 0;
   double mean_tile_candidates = 0;
   std::vector<LightSample> at_subsample;  // answers at the error-measurement balls
@@ -85,6 +86,7 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
   run.setup_seconds = solver.last_statistics().setup_seconds;
   run.search_seconds = solver.last_statistics().search_seconds;
   run.far_field_seconds = solver.last_statistics().far_field_seconds;
+  run.far_field_cell_m = solver.last_statistics().far_field_cell_m;
   run.mean_candidates = solver.last_statistics().mean_candidates;
   run.mean_tile_candidates = solver.last_statistics().mean_tile_candidates;
   spdlog::info("bench light: {} balls, {}: {:.3f} s{}", balls.size(), name, run.seconds,
@@ -95,9 +97,10 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
 std::string run_json(const Run& run, const Run& truth) {
   if (!run.ran) return "null";
   std::string text = fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "search_seconds": {:.6g}, )"
-                                 R"("far_field_seconds": {:.6g}, "estimated_from_subsample": {})",
+                                 R"("far_field_seconds": {:.6g}, "far_field_cell_m": {:.6g}, )"
+                                 R"("estimated_from_subsample": {})",
                                  run.seconds, run.setup_seconds, run.search_seconds, run.far_field_seconds,
-                                 run.estimated ? "true" : "false");
+                                 run.far_field_cell_m, run.estimated ? "true" : "false");
   if (&run != &truth && truth.ran) {
     const Error e = error_against(truth.at_subsample, run.at_subsample);
     text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"

@@ -282,6 +282,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   const std::optional<FarField> far =
       parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky, false) : std::nullopt;
   const VoxelGrid grid = far ? far->grid() : VoxelGrid{};
+  statistics_.far_field_cell_m = far ? grid.cell.z : 0.0;  // z is never stretched to fit a periodic plot
   const glm::dvec3 grid_origin = grid.origin - origin;
   const cl_float4 grid_origin_arg = {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}};
   const cl_float4 grid_cell_arg = {{float(grid.cell.x), float(grid.cell.y), float(grid.cell.z), 0.0f}};

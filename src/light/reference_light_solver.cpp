@@ -94,6 +94,7 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   const std::optional<FarField> far =
       parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky) : std::nullopt;
   statistics_.far_field_seconds = seconds_since(far_start);
+  statistics_.far_field_cell_m = far ? far->grid().cell.z : 0.0;  // z is never stretched to fit a periodic plot
   statistics_.setup_seconds = seconds_since(start);
 
   start = Clock::now();

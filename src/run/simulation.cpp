@@ -81,6 +81,29 @@ void count_trees(const Stand& stand, const RootZone* roots, SimulationSummary& s
     for (const roots::RootSystem* system : roots->living_roots()) summary.root_segments += system->segments().size();
 }
 
+// A stand that outgrows LightParameters::far_field_table_mb gets coarser far-field cells (light/far_field.hpp),
+// a little coarser every year as its crowns grow: said once, the first year it happens, rather than after every
+// solve; the coarsest cell of the run goes to the summary (`bench stand`'s light_far_field_cell_m_max).
+class FarFieldCells {
+ public:
+  explicit FarFieldCells(const LightParameters& light) : light_(light) {}
+  void after_year(const LightSolveStatistics& last_solve, int stand_age) {
+    const double cell = last_solve.far_field_cell_m;
+    coarsest_ = std::max(coarsest_, cell);
+    if (said_ || cell <= light_.far_field_cell_m * (1 + 1e-9)) return;
+    said_ = true;
+    spdlog::warn("light far field: from stand age {} a table of {} m cells would exceed far_field_table_mb = {} MB; "
+                 "using {:.3g} m cells, coarser as the crowns grow (said once; docs/light.md)",
+                 stand_age, light_.far_field_cell_m, light_.far_field_table_mb, cell);
+  }
+  double coarsest() const { return coarsest_; }
+
+ private:
+  const LightParameters& light_;
+  bool said_ = false;
+  double coarsest_ = 0;
+};
+
 }  // namespace
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
@@ -136,9 +159,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   };
 
   ProgressLine progress(scenario.run.years, options.show_progress);
+  const LightParameters stand_light = scenario.stand_light();
+  FarFieldCells far_field_cells(stand_light);
   for (int year = first_year; year <= scenario.run.years; ++year) {
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
+    far_field_cells.after_year(solver->last_statistics(), stand.stand_age());
     if (options.observe_year) options.observe_year(stand, year);
     if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years)) {
       run_progress.wall_seconds = wall_seconds();
@@ -155,6 +181,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   summary.tree_years = run_progress.tree_years;
   summary.device = solver->name();
   summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
+  summary.light_far_field_cell_m_max = far_field_cells.coarsest();
   summary.stage_seconds = clock.stages();
   summary.light_seconds = clock.seconds("light");
   summary.wall_seconds = wall_seconds();

@@ -80,7 +80,10 @@ TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
   EXPECT_EQ(row.at("error_measured_on").at("whole_stand"), true) << "below --reference-exact-max: every ball";
   EXPECT_EQ(row.at("error_measured_on").at("balls"), row.at("balls"));
   EXPECT_LT(mean_abs_error(row, "reference_culled"), 0.01) << bench.json.dump(1);
+  EXPECT_EQ(row.at("reference_culled").at("far_field_cell_m"), 1.0) << "the asked cell: far under the table cap";
+  EXPECT_EQ(row.at("reference_exact").at("far_field_cell_m"), 0.0) << "exact: no far field";
   if (!opencl) GTEST_SKIP() << "no OpenCL device: the OpenCL rows were not run";
+  EXPECT_EQ(row.at("opencl_culled_far_field").at("far_field_cell_m"), 1.0);
   EXPECT_LT(mean_abs_error(row, "opencl_exact"), 1e-5) << bench.json.dump(1);
   EXPECT_LT(mean_abs_error(row, "opencl_culled_far_field"), 0.01) << bench.json.dump(1);
   // The two culled solvers read the same candidate lists and far-field table: the same answers to float precision.

@@ -3,6 +3,8 @@
 // by timed unit tests).
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
@@ -90,6 +92,37 @@ TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
   const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   EXPECT_GT(bench.json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
+}
+
+// A stand whose far-field table outgrows far_field_table_mb gets coarser cells in every solve, a little coarser as it
+// grows: the run says so once (not once per solve, as it did until 2026-11-24: 33 lines in the 60-year hectare), and
+// the benchmark reports the coarsest cell. Here 0.1 m cells would need ~0.8 GB against a cap of 1 MB, over the
+// three solves of two years.
+TEST(BenchStandCli, CoarsenedFarFieldIsSaidOnceAndReported) {
+  const fs::path folder = scratch_folder("bench-stand-far-field-cap");
+  fs::create_directories(folder);
+  const fs::path scenario = folder / "capped.toml";
+  std::ofstream(scenario) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string()
+                          << "\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
+                             "[run]\nyears = 2\nseed = 7\n"
+                             "[light]\nsky_bands = 8\nsky_sectors = 16\nfar_field_cell_m = 0.1\nfar_field_table_mb = 1\n";
+  const fs::path json = folder / "bench.json";
+  const CliResult cli = run_cli("bench stand " + scenario.string() + " --device reference -o " + json.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  std::size_t said = 0;
+  for (std::size_t at = cli.output.find("light far field:"); at != std::string::npos;
+       at = cli.output.find("light far field:", at + 1))
+    ++said;
+  EXPECT_EQ(said, 1u) << cli.output;
+  EXPECT_NE(cli.output.find("far_field_table_mb = 1 MB"), std::string::npos) << cli.output;
+  const auto report = nlohmann::json::parse(read_text(json));
+  EXPECT_GT(report.at("light_far_field_cell_m_max").get<double>(), 0.5) << "a 1 MB table cannot hold 0.1 m cells";
+
+  // the tiny stand at its own 1 m cells stays under the default cap: nothing said, the asked cell reported
+  const Bench plain = bench_tiny(scratch_folder("bench-stand-far-field-plain"));
+  ASSERT_EQ(plain.cli.status, 0) << plain.cli.output;
+  EXPECT_EQ(plain.cli.output.find("light far field:"), std::string::npos) << plain.cli.output;
+  EXPECT_DOUBLE_EQ(plain.json.at("light_far_field_cell_m_max").get<double>(), 1.0);
 }
 
 // The counts are the stand's: the same year grown by `grow` writes as many leaf balls and root segments.
