@@ -183,7 +183,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
   summary.light_far_field_cell_m_max = far_field_cells.coarsest();
   summary.stage_seconds = clock.stages();
-  summary.light_seconds = clock.seconds("light");
+  summary.light_seconds = clock.seconds("light") + clock.seconds("light (open grown)");
   summary.wall_seconds = wall_seconds();
 
   // A resumed run records the run it continues: its first command and start (docs/user-guide.md).

@@ -33,25 +33,36 @@ void Stand::grow_year() {
   });
 }
 
-std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale) {
+namespace {
+template <typename Work>
+auto timed(StageClock* clock, const char* stage, Work work) {
+  return clock != nullptr ? clock->time(stage, work) : work();
+}
+}  // namespace
+
+std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale,
+                              StageClock* clock) {
   // Gather every living tree's leaf balls into one array (the solver sees the whole stand), remember
   // where each tree's run starts, solve once, and hand each tree its slice back.
-  std::vector<std::vector<LeafBall>> own(trees_.size());
-  parallel_for(trees_.size(), [&](std::size_t i) {
-    if (trees_[i].alive()) own[i] = trees_[i].conifer.leaf_balls();
-  });
   std::vector<LeafBall> balls;
   std::vector<std::size_t> first_ball(trees_.size() + 1, 0);
-  for (std::size_t i = 0; i < trees_.size(); ++i) {
-    first_ball[i] = balls.size();
-    balls.insert(balls.end(), own[i].begin(), own[i].end());
-    std::vector<LeafBall>().swap(own[i]);
-  }
-  first_ball[trees_.size()] = balls.size();
-
-  const std::vector<LightSample> samples = stand_solver.solve(balls);
+  const std::vector<LightSample> samples = timed(clock, "light", [&] {
+    std::vector<std::vector<LeafBall>> own(trees_.size());
+    parallel_for(trees_.size(), [&](std::size_t i) {
+      if (trees_[i].alive()) own[i] = trees_[i].conifer.leaf_balls();
+    });
+    for (std::size_t i = 0; i < trees_.size(); ++i) {
+      first_ball[i] = balls.size();
+      balls.insert(balls.end(), own[i].begin(), own[i].end());
+      std::vector<LeafBall>().swap(own[i]);
+    }
+    first_ball[trees_.size()] = balls.size();
+    return stand_solver.solve(balls);
+  });
   // The open-grown reference: every tree alone, all in one call (first_ball delimits each tree's balls).
-  const std::vector<LightSample> open_grown = open_solver.solve_each_alone(balls, first_ball);
+  const std::vector<LightSample> open_grown = timed(clock, "light (open grown)", [&] {
+    return open_solver.solve_each_alone(balls, first_ball);
+  });
   parallel_for(trees_.size(), [&](std::size_t i) {
     StandTree& tree = trees_[i];
     if (!tree.alive()) return;

@@ -12,6 +12,7 @@
 #include "records/tree_event.hpp"
 #include "stand/hegyi_index.hpp"
 #include "stand/mortality.hpp"
+#include "stand/stage_clock.hpp"
 #include "stand/stand_tree.hpp"
 #include "stand/thinning.hpp"
 #include "stand/thinning_trigger.hpp"
@@ -52,8 +53,10 @@ class Stand {
   // Step 2. The light field of the whole stand (every living tree's leaf balls shade every other's), and each
   // tree's crown alone under the reference sky (`open_solver`; the open-grown reference). Every leaf ball's
   // light, relative light (sky_scale × stand / open, at most 1) and light vector go onto its shoot, and each
-  // tree's light budget is summed. Returns the number of leaf balls lit in the stand.
-  std::size_t illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale = 1.0);
+  // tree's light budget is summed. Returns the number of leaf balls lit in the stand. With a clock, the stand's
+  // solve (gathering the balls included) is timed as stage "light" and the open-grown one as "light (open grown)".
+  std::size_t illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale = 1.0,
+                         StageClock* clock = nullptr);
   // Step 3. Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their
   // light vector or die of shade; trees left without foliage die (cause "light"). Returns the deaths.
   std::vector<TreeEvent> respond_to_light(std::uint64_t seed);

@@ -28,9 +28,7 @@ StandYearResult StandYear::run(int year) {
   // 1 grow
   if (year > 0) clock_.time("growth", [&] { stand_.grow_year(); return 0; });
   // 2 light
-  result.leaf_balls = clock_.time("light", [&] {
-    return stand_.illuminate(stand_solver_, open_solver_, settings_.sky_scale);
-  });
+  result.leaf_balls = stand_.illuminate(stand_solver_, open_solver_, settings_.sky_scale, &clock_);
   spdlog::debug("age {}: {} leaf balls lit", stand_.stand_age(), result.leaf_balls);
   // 3 respond
   if (year > 0) record(clock_.time("light response", [&] { return stand_.respond_to_light(settings_.seed); }));

@@ -69,7 +69,8 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_EQ(json.at("trees"), 8);
   EXPECT_EQ(json.at("trees_alive_at_end"), 8) << "tree 4 is thinned at 23, nothing dies in one year";
   EXPECT_EQ(json.at("tree_years"), 8);
-  for (const char* stage : {"establishment", "roots", "growth", "light", "light response", "mortality", "output"}) {
+  for (const char* stage :
+       {"establishment", "roots", "growth", "light", "light (open grown)", "light response", "mortality", "output"}) {
     ASSERT_TRUE(json.at("stage_seconds").contains(stage)) << stage;
     EXPECT_GE(json.at("stage_seconds").at(stage).get<double>(), 0.0) << stage;
   }

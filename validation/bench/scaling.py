@@ -60,7 +60,8 @@ def row(run):
     """The quantities of one run that the table shows, per tree and per tree-year."""
     tree_years = max(1, run["tree_years"])
     peak_mib = run["peak_memory_bytes"] / MIB
-    light = run["stage_seconds"].get("light", 0.0)
+    # the stand's light field and the open-grown one (a separate stage since 2026-11-25; older JSON has only "light")
+    light = run["stage_seconds"].get("light", 0.0) + run["stage_seconds"].get("light (open grown)", 0.0)
     return {
         "trees": run["trees"],
         "tree_years": run["tree_years"],
