@@ -1,8 +1,8 @@
 # Seed 000's light response at stand scale (validation/stand_light): gap regrowth after the example plantation's
-# first thinning vs an unthinned control, and self-thinning of a dense unthinned plantation. Both runs' outputs
-# and build/validation/stand_light/stand_light.md; the self-thinning run is then rendered with the stand renderer
-# (ParaView; skipped without it outside CI). The two 62-tree gap runs are not rendered here: ~4 min each on 2
-# cores (validation/stand_light/README.md has the command).
+# first thinning vs an unthinned control (four seeds), and self-thinning of a dense unthinned plantation. The
+# runs' outputs and build/validation/stand_light/stand_light.md; the self-thinning run is then rendered with the
+# stand renderer (ParaView; skipped without it outside CI). The eight 62-tree gap runs are not rendered here:
+# ~4 min each on 2 cores (validation/stand_light/README.md has the command).
 include(${PROJECT_SOURCE_DIR}/cmake/PvbatchRenderTests.cmake)
 add_executable(stand_light_validation ${PROJECT_SOURCE_DIR}/validation/stand_light/stand_light_validation.cpp)
 target_link_libraries(stand_light_validation PRIVATE heliostand_all)

@@ -9,11 +9,12 @@
 //
 //   stand_light_validation OUT_DIR [--years N] [--cutoff-m M] [--seed S]
 //
-// --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m; default the model's, 3 m) in both
-// runs: the findings measured at another cut-off (docs/light.md "The 3 m cut-off by default"). --seed replaces
-// both scenarios' own seeds (the example's 1, the dense plantation's 3): is a finding more than one draw?
+// --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m; default the model's) in all runs:
+// the findings measured at another cut-off (docs/light.md "2 m tried and not kept"). The gap is grown with
+// four seeds (the example's own and 2, 3, 4) and judged on their mean, since one draw varies as much as the
+// effect; --seed S replaces them and the dense plantation's own seed (3) by S alone: one draw of each finding.
 //
-// Writes both runs' full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
+// Writes every run's full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
 // measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
 // Cost is kept CI-sized: roots off, a coarse sky (8 x 16 patches), 10 years.
 #include <CLI/CLI.hpp>
@@ -114,21 +115,31 @@ struct Finding {
 // --- 1. Gap regrowth --------------------------------------------------------------------------------------
 
 constexpr double gap_neighbour_distance_m = 4.0;  // residual trees this close to a removed stem border its gap
+// The seeds the gap is grown with when none is given: the example's own (1) and three more. One draw's mean
+// difference spreads over +0.08 to +0.19 m between seeds (docs/light.md "Other seeds"), as wide as the effect
+// the check asks for, so the check is made on the mean over seeds (each seed a pair of 62-tree runs, ~1 minute).
+const std::vector<std::optional<std::uint64_t>> gap_seeds = {std::nullopt, 2, 3, 4};
 
-Finding gap_regrowth(const fs::path& source, const fs::path& out, FindingRun settings, std::string& report) {
-  Scenario thinned = load_scenario(source / "stands" / "sobetsu" / "scenario.toml");
+struct GapDraw {
+  std::string seed;
+  int neighbours = 0, further = 0;
+  double mean_difference_m = 0;
+};
+
+// One draw: the example grown with its first thinning and without; the border trees' reach, thinned vs control.
+GapDraw gap_draw(const Scenario& example, const fs::path& out, FindingRun settings, std::string& report) {
+  Scenario thinned = example;
   make_ci_sized(thinned, settings);
   Scenario control = thinned;
   control.thinning.clear();
-  const StandRecord with_gaps = grow(thinned, out / "gap_thinned").second;
-  const StandRecord without = grow(control, out / "gap_control").second;
+  const std::string suffix = settings.seed ? fmt::format("_seed{}", *settings.seed) : "";
+  const StandRecord with_gaps = grow(thinned, out / ("gap_thinned" + suffix)).second;
+  const StandRecord without = grow(control, out / ("gap_control" + suffix)).second;
 
-  report += fmt::format("## Gap regrowth (example plantation, age {} -> {})\n\n",
-                        thinned.stand.age_at_survey_years, thinned.final_age_years());
-  report += "Residual trees within 4 m of a stem removed by the first thinning; reach = farthest living leaf-ball "
-            "centre from the stem toward the removed stem (m), thinned run vs the unthinned control.\n\n"
-            "| tree | gap tree | distance m | reach thinned | reach control | difference |\n|---|---|---|---|---|---|\n";
-  int neighbours = 0, further = 0;
+  GapDraw draw{std::to_string(thinned.run.seed)};
+  report += fmt::format("### Seed {}\n\n", draw.seed);
+  report += "| tree | gap tree | distance m | reach thinned | reach control | difference |\n"
+            "|---|---|---|---|---|---|\n";
   double sum_difference = 0;
   for (const auto& [label, tree] : with_gaps) {
     if (tree.status != TreeStatus::alive) continue;
@@ -144,21 +155,54 @@ Finding gap_regrowth(const fs::path& source, const fs::path& out, FindingRun set
     toward.z = 0;
     toward /= glm::length(toward);
     const double into_gap = reach(tree, toward), beside_neighbour = reach(without.at(label), toward);
-    ++neighbours;
-    further += into_gap > beside_neighbour;
+    ++draw.neighbours;
+    draw.further += into_gap > beside_neighbour;
     sum_difference += into_gap - beside_neighbour;
     report += fmt::format("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:+.2f} |\n", label, *gap, nearest, into_gap,
                           beside_neighbour, into_gap - beside_neighbour);
   }
-  const double mean = neighbours ? sum_difference / neighbours : 0.0;
+  draw.mean_difference_m = draw.neighbours ? sum_difference / draw.neighbours : 0.0;
+  report += fmt::format("\nSeed {}: {} of {} further, mean difference {:+.3f} m.\n\n", draw.seed, draw.further,
+                        draw.neighbours, draw.mean_difference_m);
+  return draw;
+}
+
+// Holds when, in every draw, a majority of the border trees reach further toward the gap than in the control, and
+// the mean difference over the draws is at least 0.10 m. With --seed, that one draw.
+Finding gap_regrowth(const fs::path& source, const fs::path& out, FindingRun settings, std::string& report) {
+  const Scenario example = load_scenario(source / "stands" / "sobetsu" / "scenario.toml");
+  const int survey_age = example.stand.age_at_survey_years;
+  report += fmt::format("## Gap regrowth (example plantation, age {} -> {})\n\n", survey_age,
+                        survey_age + settings.years);
+  report += "Residual trees within 4 m of a stem removed by the first thinning; reach = farthest living leaf-ball "
+            "centre from the stem toward the removed stem (m), thinned run vs the unthinned control, per seed.\n\n";
+  const std::vector<std::optional<std::uint64_t>> seeds =
+      settings.seed ? std::vector<std::optional<std::uint64_t>>{settings.seed} : gap_seeds;
+  std::vector<GapDraw> draws;
+  for (const auto& seed : seeds) {
+    FindingRun draw_settings = settings;
+    draw_settings.seed = seed;
+    draws.push_back(gap_draw(example, out, draw_settings, report));
+  }
+  bool every_draw_a_majority = true;
+  double sum_of_means = 0;
+  std::string per_seed;
+  for (const GapDraw& draw : draws) {
+    every_draw_a_majority = every_draw_a_majority && draw.neighbours > 0 && 2 * draw.further > draw.neighbours;
+    sum_of_means += draw.mean_difference_m;
+    per_seed += fmt::format("{}seed {}: {} of {}, {:+.3f} m", per_seed.empty() ? "" : "; ", draw.seed, draw.further,
+                            draw.neighbours, draw.mean_difference_m);
+  }
+  const double mean = sum_of_means / static_cast<double>(draws.size());
   // 0.1 m in five years: less than one year's elongation of a lit Todomatsu branch (eqs. 7-10), so a crown that
   // answers its light at all gets there; before growth followed light the mean was +0.06 m.
   constexpr double min_mean_m = 0.10;
-  Finding finding{fmt::format("gap regrowth: {} of {} gap neighbours reach further toward the gap than in the "
-                              "control; mean difference {:+.3f} m (expected: a majority, mean >= {:.2f} m)",
-                              further, neighbours, mean, min_mean_m),
-                  neighbours > 0 && 2 * further > neighbours && mean >= min_mean_m};
-  report += fmt::format("\n{}\n\n", finding.text);
+  Finding finding{fmt::format("gap regrowth: gap neighbours reaching further toward the gap than in the control "
+                              "({}); mean difference over {} seed(s) {:+.3f} m (expected: a majority in every "
+                              "seed, mean >= {:.2f} m)",
+                              per_seed, draws.size(), mean, min_mean_m),
+                  every_draw_a_majority && mean >= min_mean_m};
+  report += fmt::format("{}\n\n", finding.text);
   return finding;
 }
 
@@ -225,7 +269,9 @@ int main(int argc, char** argv) {
   app.add_option("--years", settings.years, "years grown in each run")->check(CLI::Range(1, 200));
   app.add_option("--cutoff-m", settings.cutoff_m, "near-field cut-off of the light (m)")
       ->check(CLI::Range(0.5, 50.0));
-  app.add_option("--seed", settings.seed, "seed of both runs (default: each scenario's own)")
+  app.add_option("--seed", settings.seed,
+                 "seed of every run (default: the gap with the example's own seed and 2, 3, 4; the dense stand with "
+                 "its own)")
       ->check(seed_check());
   try {
     app.parse(argc, argv);
@@ -237,7 +283,8 @@ int main(int argc, char** argv) {
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
                        fmt::format("{:g} m, seed {}.\n\n", settings.cutoff_m,
-                                   settings.seed ? std::to_string(*settings.seed) : "each scenario's own");
+                                   settings.seed ? std::to_string(*settings.seed)
+                                                 : "the gap's own and 2, 3, 4, the dense stand's own");
   std::vector<Finding> findings;
   findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, settings, report));
   findings.push_back(self_thinning(out, settings, report));
