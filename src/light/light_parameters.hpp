@@ -29,8 +29,9 @@ struct LightParameters {
   // a voxel grid of leaf-ball density attenuates each patch direction (far field).
   // exact = true disables both (every ball vs every ball). 3 m since 2026-11-24: with the corrected far field the
   // light stays within 0.003 of exact and every stand check holds, at three quarters of the 4 m solve's cost
-  // (docs/light.md "The 3 m cut-off by default"); at 2 m the gap check fails for seed 1 (a check that varies
-  // between seeds about as much: docs/light.md "Other seeds").
+  // (docs/light.md "The 3 m cut-off by default"). 2 m was tried on 2026-11-25 and not kept: 0.63 of the stand
+  // solve's time, but the light 0.0105 off exact (bright by 0.008) on a synthetic open-edged canopy and a
+  // suppressed understorey tree too bright to die (docs/light.md "2 m tried and not kept").
   bool exact = false;
   double cutoff_m = 3.0;
   bool far_field = true;           // false: nothing beyond the cut-off shades (to study the approximation)
