@@ -21,7 +21,7 @@ inline float8 far_field_march8(__global const float* density, float8 sx, float8 
     const float along = (k + 0.5f) * step;
     const float8 ax = sx + along * direction.x, ay = sy + along * direction.y, az = sz + along * direction.z;
     active = active && !grid_outside8(ax, ay, az, origin, cell, dims, periodic);
-    const float8 sigma = grid_sample8(density, (int8)(0), 0, ax, ay, az, origin, cell, dims, periodic);
+    const float8 sigma = grid_sample8(density, ax, ay, az, origin, cell, dims, periodic);
     tau = select(tau, tau + sigma * step, active);
   }
   return tau;
@@ -57,7 +57,7 @@ __kernel void far_field_layer(__global const float* density, __global float* dep
   } else {
     const float reach = cell.z / fabs(direction.z);  // path to the next layer's mid-plane
     tau = far_field_march8(density, fx, fy, fz, direction, reach, origin, cell, grid_dims, periodic, saturated, valid);
-    tau += grid_sample_layer8(table, (int8)(0), 0, sx + reach * direction.x, sy + reach * direction.y,
+    tau += grid_sample_layer8(table, sx + reach * direction.x, sy + reach * direction.y,
                               sz + reach * direction.z, origin, cell, grid_dims, periodic, next);
   }
   float lane_tau[8];
