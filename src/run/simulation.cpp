@@ -115,11 +115,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const auto backend = compute::ComputeBackend::open(
       options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
   spdlog::info("compute backend (light and roots): {}", backend.name());
-  auto solver = make_light_solver(backend, scenario.stand_light());
+  const LightParameters stand_light = scenario.stand_light();
+  auto solver = make_light_solver(backend, stand_light);
   // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
   // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
   // edges; and it sees the reference sky (sky_scale 1), so a dimmer stand sky lowers every relative light.
-  LightParameters open_grown = scenario.stand_light();
+  LightParameters open_grown = stand_light;
   open_grown.exact = true;
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
@@ -159,7 +160,6 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   };
 
   ProgressLine progress(scenario.run.years, options.show_progress);
-  const LightParameters stand_light = scenario.stand_light();
   FarFieldCells far_field_cells(stand_light);
   for (int year = first_year; year <= scenario.run.years; ++year) {
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
