@@ -15,7 +15,7 @@ foreach(scenario IN LISTS HELIOSTAND_BENCH_SCENARIOS)
 endforeach()
 
 add_test(NAME bench.planted_surveys_are_generated
-         COMMAND sh -c "rm -rf \"$0\" && \"$1\" \"$2/make_planted_stands.py\" \"$0\" && for n in 100 400 1600 2500; do cmp \"$0/planted_$n.csv\" \"$2/stands/planted_$n.csv\" || exit 1; done"
+         COMMAND sh -c "rm -rf \"$0\" && \"$1\" \"$2/make_planted_stands.py\" \"$0\" && for f in planted_100 planted_400 planted_1600 planted_2500 old_100; do cmp \"$0/$f.csv\" \"$2/stands/$f.csv\" || exit 1; done"
                  ${PROJECT_BINARY_DIR}/test-output/bench-surveys ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR})
 set_tests_properties(bench.planted_surveys_are_generated PROPERTIES LABELS "bench")
 

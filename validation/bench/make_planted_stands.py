@@ -2,8 +2,9 @@
 """Writes the benchmark surveys: SYNTHETIC 20-year Todomatsu plantations planted on a 2 m x 2 m grid
 (2500 stems/ha, every planting position still stocked), each tree jittered off its grid point, on square
 plots of 20, 40, 80 and 100 m = 100, 400, 1,600 and 2,500 trees (the last one hectare). The sizes follow
-stands/tiny (age 20, 7-10 m tall, DBH 10-14 cm). No tree in them was measured. Deterministic: one fixed
-seed, the same files every run.
+stands/tiny (age 20, 7-10 m tall, DBH 10-14 cm). And old_100.csv: 100 SYNTHETIC 60-year trees on a 3 m grid
+(1,111 stems/ha, as a thinned plantation), to time establishing old trees. No tree in them was measured.
+Deterministic: one fixed seed, the same files every run.
 
     python3 validation/bench/make_planted_stands.py validation/bench/stands
 """
@@ -35,6 +36,34 @@ def tree_row(rng, number, grid_x, grid_y, edge):
             f"{crown_radius:.2f}", f"{crown_base:.1f}"]
 
 
+def old_tree_row(rng, number, grid_x, grid_y, edge):
+    """A 60-year tree of a plantation thinned to ~1,100 stems/ha: 17-23 m tall, DBH 18-30 cm (basal area 49
+    m2/ha, a little above the silver-fir yield table's class I.0 at 60, 44.8: validation/stand/sources.md),
+    crown 1.4-2.5 m in radius, crown base 8-12 m."""
+    x = clip(grid_x + rng.uniform(-JITTER, JITTER), 0.0, edge)
+    y = clip(grid_y + rng.uniform(-JITTER, JITTER), 0.0, edge)
+    vigour = rng.gauss(0.0, 1.0)
+    height = clip(20.0 + 1.2 * vigour + rng.gauss(0.0, 0.4), 17.0, 23.0)      # m
+    dbh = clip(23.5 + 2.5 * vigour + rng.gauss(0.0, 1.2), 18.0, 30.0)         # cm
+    crown_radius = clip(0.4 + 0.06 * dbh + rng.gauss(0.0, 0.12), 1.4, 2.5)  # m
+    crown_base = clip(10.0 - 0.5 * vigour + rng.gauss(0.0, 0.5), 8.0, 12.0)   # m
+    return [f"P{number:04d}", f"{x:.2f}", f"{y:.2f}", f"{height:.1f}", f"{dbh:.1f}",
+            f"{crown_radius:.2f}", f"{crown_base:.1f}"]
+
+
+def write_old_stand(folder):
+    rng = random.Random(SEED * 10_000 + 60)
+    spacing, edge = 3.0, 30.0
+    cells = int(edge / spacing)
+    with open(folder / "old_100.csv", "w", newline="") as out:
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(["id", "x", "y", "height", "dbh", "crown_radius", "crown_base"])
+        for j in range(cells):
+            for i in range(cells):
+                number = j * cells + i + 1
+                writer.writerow(old_tree_row(rng, number, spacing / 2 + i * spacing, spacing / 2 + j * spacing, edge))
+
+
 def write_stand(folder, trees, edge):
     rng = random.Random(SEED * 10_000 + trees)
     cells = int(edge / SPACING)
@@ -52,6 +81,7 @@ def main():
     folder.mkdir(parents=True, exist_ok=True)
     for trees, edge in PLOTS.items():
         write_stand(folder, trees, edge)
+    write_old_stand(folder)
 
 
 if __name__ == "__main__":
