@@ -6,6 +6,7 @@
 //                  crown base moves in steps of one whorl, i.e. one year's height growth);
 //   crown radius — the elongation scale, by safeguarded secant steps on full regrowths.
 // A tree that cannot be fitted is reported with how far off it is; nothing throws.
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -57,6 +58,7 @@ struct CalibrationResult {
   double crown_radius_error_relative = 0;  // 0 when the record has no crown radius
   double crown_base_error_m = 0;           // reached - record; 0 when the record has no crown base
   int regrowths = 0;                       // full growths from planting the fit needed
+  std::size_t largest_regrowth_shoots = 0; // the most shoots one of them grew: what the fit cost in time and memory
   std::string message;                     // one line: what was fitted, or what is off and by how much
 
   // Height and crown radius within tolerance: the tree may be used in the stand.

@@ -33,6 +33,25 @@ TEST(Calibration, EveryTypicalPlantationRecordLandsWithinHeightAndCrownRadiusTol
       }
 }
 
+// Old trees of a mapped stand: the fit must not pass through crowns far larger than the record's. Starting from the
+// species' own elongation scale it grew a 60-year-old's crown to 570 000 shoots, 80 times the fitted tree's 7 000
+// (docs/performance.md "Establishing old trees"); the bound of 4 leaves room for one secant step past the record.
+TEST(Calibration, OldTreesAreFittedWithoutGrowingCrownsFarLargerThanTheirOwn) {
+  const SpeciesParameters species;
+  int id = 0;
+  for (int age : {40, 60, 80})
+    for (double crown_radius : {1.5, 2.0, 2.5}) {
+      const double height = 0.35 * age;
+      const SurveyTarget record{age, height, crown_radius, 0.5 * height};
+      const CalibrationResult result = calibrate_tree(species, record, 7, id++);
+      SCOPED_TRACE(result.message);
+      EXPECT_EQ(result.status, CalibrationStatus::fitted);
+      const ConiferTree tree = grow_calibrated_tree(species, result.calibration, age, {}, 7, id - 1,
+                                                    {std::nullopt, record.crown_base_m});
+      EXPECT_LE(result.largest_regrowth_shoots, 4 * tree.shoots().size());
+    }
+}
+
 TEST(Calibration, HeightIsMetByTheFittedAsymptote) {
   const SpeciesParameters species;
   const CalibrationResult result = calibrate_tree(species, {35, 16.0, std::nullopt, std::nullopt}, 1, 1);
