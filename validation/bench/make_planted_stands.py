@@ -19,69 +19,64 @@ JITTER = 0.3       # m; planters do not hit the grid exactly
 PLOTS = {100: 20.0, 400: 40.0, 1600: 80.0, 2500: 100.0}  # trees: plot edge, m
 
 
+# Sizes of a stand's trees: each (mean, change per unit of the tree's vigour, noise sd, lowest, highest); the crown
+# radius is (intercept, change per cm of DBH, noise sd, lowest, highest).
+YOUNG = {  # age 20, as stands/tiny: 7-10 m tall, DBH 10-14 cm
+    "height": (8.8, 0.8, 0.25, 7.0, 10.5),         # m
+    "dbh": (12.0, 1.4, 0.7, 9.0, 15.0),            # cm
+    "crown_radius": (0.2, 0.07, 0.06, 0.8, 1.3),   # m
+    "crown_base": (4.0, -0.25, 0.2, 3.3, 4.6),     # m
+}
+# Age 60, a plantation thinned to ~1,100 stems/ha: 17-23 m tall, DBH 18-30 cm (basal area 49 m2/ha, a little above
+# the silver-fir yield table's class I.0 at 60, 44.8: validation/stand/sources.md), crown base 8-12 m.
+OLD = {
+    "height": (20.0, 1.2, 0.4, 17.0, 23.0),
+    "dbh": (23.5, 2.5, 1.2, 18.0, 30.0),
+    "crown_radius": (0.4, 0.06, 0.12, 1.4, 2.5),
+    "crown_base": (10.0, -0.5, 0.5, 8.0, 12.0),
+}
+
+
 def clip(value, low, high):
     return max(low, min(high, value))
 
 
-def tree_row(rng, number, grid_x, grid_y, edge):
+def size(rng, rule, driver):
+    mean, slope, noise, low, high = rule
+    return clip(mean + slope * driver + rng.gauss(0.0, noise), low, high)
+
+
+def tree_row(rng, number, grid_x, grid_y, edge, sizes):
     x = clip(grid_x + rng.uniform(-JITTER, JITTER), 0.0, edge)
     y = clip(grid_y + rng.uniform(-JITTER, JITTER), 0.0, edge)
     # One vigour score per tree drives all its sizes, so they are correlated as in a real stand.
     vigour = rng.gauss(0.0, 1.0)
-    height = clip(8.8 + 0.8 * vigour + rng.gauss(0.0, 0.25), 7.0, 10.5)       # m
-    dbh = clip(12.0 + 1.4 * vigour + rng.gauss(0.0, 0.7), 9.0, 15.0)          # cm
-    crown_radius = clip(0.2 + 0.07 * dbh + rng.gauss(0.0, 0.06), 0.8, 1.3)   # m
-    crown_base = clip(4.0 - 0.25 * vigour + rng.gauss(0.0, 0.2), 3.3, 4.6)    # m
+    height = size(rng, sizes["height"], vigour)
+    dbh = size(rng, sizes["dbh"], vigour)
+    crown_radius = size(rng, sizes["crown_radius"], dbh)
+    crown_base = size(rng, sizes["crown_base"], vigour)
     return [f"P{number:04d}", f"{x:.2f}", f"{y:.2f}", f"{height:.1f}", f"{dbh:.1f}",
             f"{crown_radius:.2f}", f"{crown_base:.1f}"]
 
 
-def old_tree_row(rng, number, grid_x, grid_y, edge):
-    """A 60-year tree of a plantation thinned to ~1,100 stems/ha: 17-23 m tall, DBH 18-30 cm (basal area 49
-    m2/ha, a little above the silver-fir yield table's class I.0 at 60, 44.8: validation/stand/sources.md),
-    crown 1.4-2.5 m in radius, crown base 8-12 m."""
-    x = clip(grid_x + rng.uniform(-JITTER, JITTER), 0.0, edge)
-    y = clip(grid_y + rng.uniform(-JITTER, JITTER), 0.0, edge)
-    vigour = rng.gauss(0.0, 1.0)
-    height = clip(20.0 + 1.2 * vigour + rng.gauss(0.0, 0.4), 17.0, 23.0)      # m
-    dbh = clip(23.5 + 2.5 * vigour + rng.gauss(0.0, 1.2), 18.0, 30.0)         # cm
-    crown_radius = clip(0.4 + 0.06 * dbh + rng.gauss(0.0, 0.12), 1.4, 2.5)  # m
-    crown_base = clip(10.0 - 0.5 * vigour + rng.gauss(0.0, 0.5), 8.0, 12.0)   # m
-    return [f"P{number:04d}", f"{x:.2f}", f"{y:.2f}", f"{height:.1f}", f"{dbh:.1f}",
-            f"{crown_radius:.2f}", f"{crown_base:.1f}"]
-
-
-def write_old_stand(folder):
-    rng = random.Random(SEED * 10_000 + 60)
-    spacing, edge = 3.0, 30.0
+def write_stand(path, rng, spacing, edge, sizes):
     cells = int(edge / spacing)
-    with open(folder / "old_100.csv", "w", newline="") as out:
+    with open(path, "w", newline="") as out:
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(["id", "x", "y", "height", "dbh", "crown_radius", "crown_base"])
         for j in range(cells):
             for i in range(cells):
                 number = j * cells + i + 1
-                writer.writerow(old_tree_row(rng, number, spacing / 2 + i * spacing, spacing / 2 + j * spacing, edge))
-
-
-def write_stand(folder, trees, edge):
-    rng = random.Random(SEED * 10_000 + trees)
-    cells = int(edge / SPACING)
-    with open(folder / f"planted_{trees}.csv", "w", newline="") as out:
-        writer = csv.writer(out, lineterminator="\n")
-        writer.writerow(["id", "x", "y", "height", "dbh", "crown_radius", "crown_base"])
-        for j in range(cells):
-            for i in range(cells):
-                number = j * cells + i + 1
-                writer.writerow(tree_row(rng, number, SPACING / 2 + i * SPACING, SPACING / 2 + j * SPACING, edge))
+                writer.writerow(tree_row(rng, number, spacing / 2 + i * spacing, spacing / 2 + j * spacing, edge,
+                                         sizes))
 
 
 def main():
     folder = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).parent / "stands")
     folder.mkdir(parents=True, exist_ok=True)
     for trees, edge in PLOTS.items():
-        write_stand(folder, trees, edge)
-    write_old_stand(folder)
+        write_stand(folder / f"planted_{trees}.csv", random.Random(SEED * 10_000 + trees), SPACING, edge, YOUNG)
+    write_stand(folder / "old_100.csv", random.Random(SEED * 10_000 + 60), 3.0, 30.0, OLD)
 
 
 if __name__ == "__main__":
