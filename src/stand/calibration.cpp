@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -93,9 +95,13 @@ class Fit {
     double scale = first_scale(calibration, record);
     for (int i = 0; i < max_regrowths; ++i) {
       calibration.elongation_scale = scale;
-      const double radius = grow(calibration).crown_radius_m();
+      ConiferTree tree = grow(calibration);
+      const double radius = tree.crown_radius_m();
       const double error = std::abs(radius - record) / record;
-      if (error < best_error) best_error = error, best_scale = scale, reached = radius;
+      if (error < best_error) {
+        best_error = error, best_scale = scale, reached = radius;
+        best_tree_.emplace(std::move(tree));
+      }
       if (error <= relative_tolerance) break;
       if (radius < record) low = scale, have_low = true;
       else high = scale, have_high = true;
@@ -128,6 +134,10 @@ class Fit {
     return guess < (2.0 / 3.0) * species_scale ? std::max(guess, small_scale_probes[0]) : species_scale;
   }
 
+  // The growth at the scale fit_elongation_scale returned, if it ran: the calibrated tree itself (growth is
+  // deterministic, so growing it once more would repeat it exactly).
+  std::optional<ConiferTree> take_best_tree() { return std::exchange(best_tree_, std::nullopt); }
+
   int regrowths() const { return regrowths_; }
   std::size_t largest_regrowth_shoots() const { return largest_shoots_; }
 
@@ -138,6 +148,7 @@ class Fit {
   int tree_id_;
   int regrowths_ = 0;
   std::size_t largest_shoots_ = 0;
+  std::optional<ConiferTree> best_tree_;
 
   ConiferTree counted(ConiferTree tree) {
     ++regrowths_;
@@ -170,7 +181,8 @@ CalibrationResult calibrate_tree(const SpeciesParameters& species, const SurveyT
                                                             0.25 * tolerance.crown_radius_relative,
                                                             tolerance.max_crown_radius_regrowths, reached);
   }
-  const ConiferTree tree = fit.grow(calibration);
+  std::optional<ConiferTree> fitted = fit.take_best_tree();
+  const ConiferTree tree = fitted ? std::move(*fitted) : fit.grow(calibration);
   result.regrowths = fit.regrowths();
   result.largest_regrowth_shoots = fit.largest_regrowth_shoots();
   result.height_m = tree.height_m();
