@@ -87,7 +87,7 @@ class Fit {
   // start from the species' own scale, unless the record's crown is far smaller than that scale grows
   // (first_scale).
   double fit_elongation_scale(TreeCalibration calibration, double record, double relative_tolerance,
-                              int max_regrowths, double& reached) {
+                              int max_regrowths) {
     const double min_scale = 0.02, max_scale = 50.0;
     double low = min_scale, high = max_scale;  // bracket: radius(low) < record < radius(high) once both seen
     bool have_low = false, have_high = false;
@@ -99,7 +99,7 @@ class Fit {
       const double radius = tree.crown_radius_m();
       const double error = std::abs(radius - record) / record;
       if (error < best_error) {
-        best_error = error, best_scale = scale, reached = radius;
+        best_error = error, best_scale = scale;
         best_tree_.emplace(std::move(tree));
       }
       if (error <= relative_tolerance) break;
@@ -175,12 +175,10 @@ CalibrationResult calibrate_tree(const SpeciesParameters& species, const SurveyT
   if (target.crown_base_m)
     calibration.growth_stop_years_first_order = fit.fit_growth_stop_years(calibration, *target.crown_base_m);
   // Aim well inside the tolerance: the final growth must land within it.
-  if (target.crown_radius_m) {
-    double reached = 0.0;
+  if (target.crown_radius_m)
     calibration.elongation_scale = fit.fit_elongation_scale(calibration, *target.crown_radius_m,
                                                             0.25 * tolerance.crown_radius_relative,
-                                                            tolerance.max_crown_radius_regrowths, reached);
-  }
+                                                            tolerance.max_crown_radius_regrowths);
   std::optional<ConiferTree> fitted = fit.take_best_tree();
   const ConiferTree tree = fitted ? std::move(*fitted) : fit.grow(calibration);
   result.regrowths = fit.regrowths();
