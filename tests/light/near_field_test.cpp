@@ -35,7 +35,10 @@ void expect_tiles_hold_every_near_occluder(const OccluderSet& set, std::span<con
   EXPECT_EQ(slots, every) << "each receiver slot in exactly one tile";
   std::size_t near_pairs = 0;
   for (std::size_t t = 0; t < near.tile_count(); ++t) {
-    const std::span<const std::uint32_t> list(near.occluders.data() + near.start[t], near.start[t + 1] - near.start[t]);
+    // In the order the search found them (the light does not depend on it); sorted here to look them up.
+    std::vector<std::uint32_t> list(near.occluders.begin() + near.start[t], near.occluders.begin() + near.start[t + 1]);
+    std::sort(list.begin(), list.end());
+    EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "tile " << t << " lists an occluder twice";
     for (auto k = near.slot_start[t]; k < near.slot_start[t + 1]; ++k) {
       const std::uint32_t receiver = receivers[near.slots[k]];
       for (std::uint32_t j = 0; j < set.centres.size(); ++j) {
