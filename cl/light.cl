@@ -231,7 +231,7 @@ __kernel void light_each_alone(__global const float4* balls, __global const int*
 // The far field of a receiver at `at`: log(B) -= (1 - t) tau for every patch, tau interpolated in the table laid
 // out by cell (far_field_by_cell), which holds each cell's optical depth from FarField::start_distance outward.
 // Every patch is read at the receiver's own position, so one set of trilinear weights and eight corner rows serve
-// them all, eight patches at a time; the corners and the arithmetic are those of grid_sample_layer8.
+// them all, eight patches at a time; the corners and the arithmetic are those of grid_sample_shifted8.
 inline void far_field_attenuate(float* log_b, __global const float* by_cell, float3 at, float3 origin, float3 cell,
                                 int4 dims, int periodic, float one_minus_t) {
   if (any(grid_outside8((float8)(at.x), (float8)(at.y), (float8)(at.z), origin, cell, dims, periodic))) return;

@@ -45,8 +45,8 @@ std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8;
 // The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
 // out by cell; it stays there for the culled kernel.
 cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
-                           std::size_t patch_count, const cl::Buffer& patches, const cl_float4& origin,
-                           const cl_float4& cell, const cl_int4& dims, bool periodic) {
+                           std::size_t patch_count, const cl::Buffer& patches, const cl_float4& cell,
+                           const cl_int4& dims, bool periodic) {
   const auto& context = device.context;
   const std::vector<float> density(far.density().begin(), far.density().end());
   const cl::Buffer density_buffer = read_only(context, density);
@@ -58,7 +58,6 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   k.setArg(arg++, density_buffer);
   k.setArg(arg++, depth);
   k.setArg(arg++, patches);
-  k.setArg(arg++, origin);
   k.setArg(arg++, cell);
   k.setArg(arg++, dims);
   k.setArg(arg++, cl_int(periodic ? 1 : 0));
@@ -290,8 +289,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
   const cl::Buffer depth_buffer =
       far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
-                            sky.patches().size(), patches_buffer, grid_origin_arg, grid_cell_arg, grid_dims_arg,
-                            torus.periodic)
+                            sky.patches().size(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic)
           : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
   statistics_.far_field_seconds = seconds_since(part_start);
   statistics_.setup_seconds = seconds_since(setup_start);

@@ -319,6 +319,40 @@ TEST(LightEightLanes, SkiesOfAnyPatchCountMatchTheReferenceInTheFarField) {
     }
 }
 
+// The sweep looks up eight columns at once, with two loads of eight per corner row where one row holds all eight
+// and their corners (cl/voxel_grid.clh, grid_sample_shifted8), and lane by lane elsewhere: rows of several runs
+// of eight columns and rays slanted across many of them (the lowest band of an 8-band sky climbs one 0.4 m layer
+// in ~4 m), open and periodic (where the slanted rays wrap around the plot's sides), must match the reference.
+TEST(LightEightLanes, WideGridsWithLongSlantedRaysMatchTheReferenceInTheFarField) {
+  const auto device = compute::opencl_backend_for_test();
+  if (!device) GTEST_SKIP() << "no OpenCL device";
+  for (const bool periodic : {false, true})
+    for (const bool corrected : {false, true}) {
+      LightParameters p;
+      p.exact = false;
+      p.periodic = periodic;
+      p.far_field_bias_correction = corrected;
+      p.sky_bands = 8;
+      p.sky_sectors = 16;
+      p.plot_x_max = p.plot_y_max = 12.0;  // 30 columns of 0.4 m a row, more on the open grid
+      p.cutoff_m = 1.0;                    // most of the shade from the far field
+      p.far_field_cell_m = 0.4;
+      p.transmittance = 0.6;
+      const CelestialSphere sky(p);
+      const auto balls = testing::random_stand(250, 12.0, 0.2, 0.6, 11, sky, periodic);
+      const auto expected = ReferenceLightSolver(p).solve(balls);
+      const auto actual = make_light_solver(*device, p)->solve(balls);
+      ASSERT_EQ(actual.size(), balls.size());
+      double lowest = 1;
+      for (std::size_t k = 0; k < balls.size(); ++k) {
+        lowest = std::min(lowest, expected[k].light);
+        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4)
+            << (periodic ? "periodic" : "open") << (corrected ? ", corrected" : "") << ", ball " << k;
+      }
+      EXPECT_LT(lowest, 0.8) << (periodic ? "periodic" : "open");  // there is shade to get right
+    }
+}
+
 // The exact and culled kernels against the reference's exact answer on `balls` (`culled` keeps every ball within
 // its cut-off, so it must equal exact), and the open-grown kernel against the reference's on `groups`, all at 1e-5:
 // one patch shaded or missed moves a light by ~(1 - t) / patch count, far above it. `label` names the case.
