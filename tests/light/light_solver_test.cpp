@@ -1,5 +1,6 @@
 // One test body, run against both light solvers (reference and OpenCL) in exact and culled mode:
 // the OpenMM pattern of shared platform tests.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -286,6 +287,23 @@ TEST_P(LightEquivalenceTest, OpenCLMatchesReferenceOnRandomStands) {
   }
 }
 
+// The culled solver of `device` against the reference on a random stand of `count` balls in a cube of `size`
+// metres, at 1e-4 (the far field in float against double), where the stand shades somewhere below 0.8.
+void expect_far_field_matches_reference(const compute::ComputeBackend& device, const LightParameters& p,
+                                        std::size_t count, double size, std::uint64_t seed, const std::string& label) {
+  const CelestialSphere sky(p);
+  const auto balls = testing::random_stand(count, size, 0.2, 0.6, seed, sky, p.periodic);
+  const auto expected = ReferenceLightSolver(p).solve(balls);
+  const auto actual = make_light_solver(device, p)->solve(balls);
+  ASSERT_EQ(actual.size(), balls.size()) << label;
+  double lowest = 1;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    lowest = std::min(lowest, expected[k].light);
+    EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4) << label << ", ball " << k;
+  }
+  EXPECT_LT(lowest, 0.8) << label;  // there is shade to get right
+}
+
 // The culled kernel reads the far field eight patches at a time (cl/light.cl) and the sweep fills the table eight
 // columns at a time (cl/far_field.cl): skies whose patch count is not a multiple of eight (2 and 30 patches) and
 // grids of any column count must match the reference too, open and periodic.
@@ -304,18 +322,8 @@ TEST(LightEightLanes, SkiesOfAnyPatchCountMatchTheReferenceInTheFarField) {
       p.cutoff_m = 1.5;  // most of the shade from the far field
       p.far_field_cell_m = 0.9;
       p.transmittance = 0.6;
-      const CelestialSphere sky(p);
-      const auto balls = testing::random_stand(150, 5.5, 0.2, 0.6, 7, sky, periodic);
-      const auto expected = ReferenceLightSolver(p).solve(balls);
-      const auto actual = make_light_solver(*device, p)->solve(balls);
-      ASSERT_EQ(actual.size(), balls.size());
-      double lowest = 1;
-      for (std::size_t k = 0; k < balls.size(); ++k) {
-        lowest = std::min(lowest, expected[k].light);
-        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4)
-            << bands << " x " << sectors << (periodic ? " periodic" : " open") << ", ball " << k;
-      }
-      EXPECT_LT(lowest, 0.8) << bands << " x " << sectors;  // there is shade to get right
+      expect_far_field_matches_reference(*device, p, 150, 5.5, 7,
+                                         fmt::format("{} x {} {}", bands, sectors, periodic ? "periodic" : "open"));
     }
 }
 
@@ -338,18 +346,8 @@ TEST(LightEightLanes, WideGridsWithLongSlantedRaysMatchTheReferenceInTheFarField
       p.cutoff_m = 1.0;                    // most of the shade from the far field
       p.far_field_cell_m = 0.4;
       p.transmittance = 0.6;
-      const CelestialSphere sky(p);
-      const auto balls = testing::random_stand(250, 12.0, 0.2, 0.6, 11, sky, periodic);
-      const auto expected = ReferenceLightSolver(p).solve(balls);
-      const auto actual = make_light_solver(*device, p)->solve(balls);
-      ASSERT_EQ(actual.size(), balls.size());
-      double lowest = 1;
-      for (std::size_t k = 0; k < balls.size(); ++k) {
-        lowest = std::min(lowest, expected[k].light);
-        EXPECT_NEAR(actual[k].light, expected[k].light, 1e-4)
-            << (periodic ? "periodic" : "open") << (corrected ? ", corrected" : "") << ", ball " << k;
-      }
-      EXPECT_LT(lowest, 0.8) << (periodic ? "periodic" : "open");  // there is shade to get right
+      expect_far_field_matches_reference(*device, p, 250, 12.0, 11,
+                                         fmt::format("{}{}", periodic ? "periodic" : "open", corrected ? ", corrected" : ""));
     }
 }
 
