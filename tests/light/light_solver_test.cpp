@@ -346,8 +346,8 @@ TEST(LightEightLanes, WideGridsWithLongSlantedRaysMatchTheReferenceInTheFarField
       p.cutoff_m = 1.0;                    // most of the shade from the far field
       p.far_field_cell_m = 0.4;
       p.transmittance = 0.6;
-      expect_far_field_matches_reference(*device, p, 250, 12.0, 11,
-                                         fmt::format("{}{}", periodic ? "periodic" : "open", corrected ? ", corrected" : ""));
+      const std::string label = fmt::format("{}{}", periodic ? "periodic" : "open", corrected ? ", corrected" : "");
+      expect_far_field_matches_reference(*device, p, 250, 12.0, 11, label);
     }
 }
 
