@@ -144,6 +144,17 @@ inline void batch_finish(OccluderBatch* batch, float* log_b, __global const floa
   batch->count = 0;
 }
 
+// The first `count` balls of `held_index` into the batch, as offsets from the receiver at `centre`.
+inline void batch_fill(OccluderBatch* batch, __global const float4* balls, const int* held_index, int count,
+                       float3 centre) {
+  for (int l = 0; l < count; ++l) {
+    const float4 ball = balls[held_index[l]];
+    const float3 d = ball.xyz - centre;
+    batch->x[l] = d.x, batch->y[l] = d.y, batch->z[l] = d.z, batch->r[l] = ball.w;
+  }
+  batch->count = count;
+}
+
 // Puts the ball at offset d into the batch, shading the receiver once eight are in; batch_finish shades the rest.
 inline void shade_by_ball(OccluderBatch* batch, float* log_b, __global const float* axes, float3 d, float r,
                           float log_t) {
@@ -266,13 +277,14 @@ inline void far_field_attenuate(float* log_b, __global const float* by_cell, flo
   }
 }
 
-// Culled: receivers come in tile order; each reads its tile's candidate list (CSR), keeps the occluders whose
-// centre lies within the cut-off of its own (the reference solver's test, in float), then adds the far-field
-// optical depth (far_field_attenuate), attenuating by exp(-(1 - t) tau); with
+// Culled: receivers come in tile order; each reads the part of its tile's candidate list (CSR) that can hold its
+// near field, scan = (first, end) (light/near_field.hpp: the list in shells of distance from the tile's centre),
+// keeps the occluders whose centre lies within the cut-off of its own (the reference solver's test, in float),
+// then adds the far-field optical depth (far_field_attenuate), attenuating by exp(-(1 - t) tau); with
 // LightParameters::far_field_bias_correction the clumping index is already in the table's density.
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
-                           __global const int* receiver_tiles, const int receiver_count,
-                           __global const int* candidate_start, __global const int* candidates,
+                           __global const int2* receiver_scan, const int receiver_count,
+                           __global const int* candidates,
                            __global const float4* patches, __global const float* axes, __global const float* b0,
                            const float log_t, __global const float* far_by_cell, const float4 grid_origin,
                            const float4 grid_cell, const int4 grid_dims, const int periodic, const float cutoff,
@@ -280,33 +292,33 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   const int slot = get_global_id(0);
   if (slot >= receiver_count) return;
   const int self = receivers[slot];
-  const int tile = receiver_tiles[slot];
+  const int2 scan = receiver_scan[slot];
   const float3 centre = balls[self].xyz;
   const float cutoff2 = cutoff * cutoff;
   float log_b[AXIS_STRIDE];
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
-  // Without a branch on the distance: every candidate is written into the batch's next free lane, and only one
-  // within the cut-off (about one in five of a tile's candidates) claims it; a rejected one is overwritten by the
-  // next; lanes past the batch's count are computed with the others in shade_by_batch but never used (the
-  // receiver itself, at offset 0, may sit there: its window is garbage, harmlessly). Kept in order, so every patch
-  // sums the same terms in the same order as before. An unpredictable branch per candidate cost more than the four
-  // stores.
+  // Without a branch on the distance: every candidate's index is written into the next free place, and only one
+  // within the cut-off (about one in three of the candidates scanned on a grown canopy) claims it; a rejected one
+  // is overwritten by the next. Once eight are held, their offsets are read again (from cache) into the batch.
+  // Every hit adds the same log t, so neither this order nor the shells' changes a patch's sum. An unpredictable
+  // branch per candidate cost more than the store; storing the index instead of the offset and radius measured
+  // the same, and eight candidates' distances in SIMD lanes slower (docs/performance.md).
+  int held_index[8];
   int held = 0;
-  for (int k = candidate_start[tile]; k < candidate_start[tile + 1]; ++k) {
+  for (int k = scan.x; k < scan.y; ++k) {
     const int j = candidates[k];
-    const float4 ball = balls[j];
-    const float3 d = ball.xyz - centre;
-    batch.x[held] = d.x, batch.y[held] = d.y, batch.z[held] = d.z, batch.r[held] = ball.w;
+    const float3 d = balls[j].xyz - centre;
+    held_index[held] = j;
     held += (j != self && dot(d, d) <= cutoff2) ? 1 : 0;
     if (held == 8) {
-      batch.count = held;
+      batch_fill(&batch, balls, held_index, held, centre);
       batch_finish(&batch, log_b, axes, log_t);
       held = 0;
     }
   }
-  batch.count = held;
+  batch_fill(&batch, balls, held_index, held, centre);
   batch_finish(&batch, log_b, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);

@@ -30,7 +30,7 @@ struct LightSolveStatistics {
   double search_seconds = 0;      // k-d tree and near-field candidate lists
   double far_field_seconds = 0;   // far-field density and optical-depth table
   double mean_candidates = 0;     // near-field occluders per ball (culled) or all other balls (exact)
-  double mean_tile_candidates = 0;  // culled: length of the tile's candidate list each ball scans
+  double mean_tile_candidates = 0;  // culled: candidates each ball scans (the shells of its tile's list it needs)
   // Culled with a far field: the edge of its cells (m), LightParameters::far_field_cell_m unless a table at that
   // size would exceed far_field_table_mb, when the cells are made coarser. 0 without a far field.
   double far_field_cell_m = 0;

@@ -297,13 +297,13 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   // Near-field candidates, one list per tile of receivers (light/near_field.hpp).
   part_start = Clock::now();
   const TileCandidates near = search.tile_candidates(receivers, tile_edge_for(parameters_.cutoff_m));
-  std::vector<cl_int> receiver_balls(receivers.size()), receiver_tiles(receivers.size());
+  std::vector<cl_int> receiver_balls(receivers.size());
+  std::vector<cl_int2> receiver_scan(receivers.size());  // the part of its tile's list each receiver scans
   for (std::size_t tile = 0; tile < near.tile_count(); ++tile)
     for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
       receiver_balls[k] = cl_int(receivers[near.slots[k]]);
-      receiver_tiles[k] = cl_int(tile);
+      receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
     }
-  const cl::Buffer starts_buffer = read_only(context, std::vector<cl_int>(near.start.begin(), near.start.end()));
   const cl::Buffer candidates_buffer =
       read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
   const double search_seconds = seconds_since(part_start);
@@ -315,16 +315,15 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     const std::size_t count = std::min(culled_chunk, receivers.size() - first);
     const cl::Buffer receivers_buffer = read_only(context, std::vector<cl_int>(receiver_balls.begin() + first,
                                                                                 receiver_balls.begin() + first + count));
-    const cl::Buffer tiles_buffer = read_only(context, std::vector<cl_int>(receiver_tiles.begin() + first,
-                                                                            receiver_tiles.begin() + first + count));
+    const cl::Buffer scan_buffer = read_only(context, std::vector<cl_int2>(receiver_scan.begin() + first,
+                                                                           receiver_scan.begin() + first + count));
     cl::Buffer out(context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
     auto& k = device_->culled;
     int arg = 0;
     k.setArg(arg++, balls_buffer);
     k.setArg(arg++, receivers_buffer);
-    k.setArg(arg++, tiles_buffer);
+    k.setArg(arg++, scan_buffer);
     k.setArg(arg++, cl_int(count));
-    k.setArg(arg++, starts_buffer);
     k.setArg(arg++, candidates_buffer);
     k.setArg(arg++, patches_buffer);
     k.setArg(arg++, axes_buffer);
@@ -347,7 +346,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     LightSample& sample = samples[near.slots[k]];
     sample.light = r[3];
     sample.vector = glm::dvec3(r[0], r[1], r[2]);
-    candidate_total += near.start[receiver_tiles[k] + 1] - near.start[receiver_tiles[k]];
+    candidate_total += std::size_t(receiver_scan[k].s[1] - receiver_scan[k].s[0]);
   }
   statistics_.evaluate_seconds = seconds_since(start);
   statistics_.setup_seconds += search_seconds;

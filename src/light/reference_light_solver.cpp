@@ -105,10 +105,10 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
     for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
       const std::uint32_t slot = near.slots[k];
       occluders.clear();
-      for (auto c = near.start[tile]; c < near.start[tile + 1]; ++c)
+      for (auto c = near.start[tile]; c < near.scan_end[k]; ++c)  // the shells that can hold its near field
         if (search.within_cutoff(receivers[slot], near.occluders[c])) occluders.push_back(near.occluders[c]);
       candidate_total += occluders.size();
-      scanned_total += near.start[tile + 1] - near.start[tile];
+      scanned_total += near.scan_end[k] - near.start[tile];
       samples[slot] = culled_sample(set, occluders, far, set.centres[receivers[slot]], sky, torus, t);
     }
   statistics_.mean_candidates = receivers.empty() ? 0.0 : double(candidate_total) / receivers.size();

@@ -41,7 +41,7 @@ struct SimulationSummary {
   std::size_t leaf_balls = 0;     // one per foliage-carrying shoot tip (what the light solver sees)
   std::size_t shoots = 0;         // living and dead shoots still attached (the crowns as held in memory)
   std::size_t root_segments = 0;  // of their root systems
-  double light_tile_candidates_per_ball = 0;  // length of the near-field tile list each ball scanned in the last light solve
+  double light_tile_candidates_per_ball = 0;  // near-field candidates each ball scanned in the last light solve
   double light_far_field_cell_m_max = 0;  // coarsest far-field cell of the run's stand solves (m; 0: no far field)
 };
 
