@@ -26,14 +26,23 @@ glm::dvec3 tile_centre(const TileKey& key, double tile_m) {
 
 // Shell s of a tile's list holds the occluders at distance (cutoff + s w, cutoff + (s+1) w] from its centre
 // (shell 0 also everything nearer, the last everything farther), w = (reach - cutoff) / near_field_shells.
-struct ShellLayout {
-  double cutoff, width;
-  ShellLayout(double cutoff_m, double reach_m) : cutoff(cutoff_m), width((reach_m - cutoff_m) / near_field_shells) {}
-  // The first shell whose outer bound is at least `distance`.
-  std::size_t of(double distance) const {
-    const double s = std::ceil((distance - cutoff) / width) - 1.0;
-    return static_cast<std::size_t>(std::clamp(s, 0.0, double(near_field_shells - 1)));
+// Compared on squared distances (FLANN's), so that no square root is taken per candidate; the shell of a
+// distance never decreases as the distance grows, which is all the scan's bound needs.
+class ShellLayout {
+ public:
+  ShellLayout(double cutoff_m, double reach_m) {
+    const double width = (reach_m - cutoff_m) / near_field_shells;
+    for (int s = 0; s + 1 < near_field_shells; ++s) outer_squared_[s] = std::pow(cutoff_m + (s + 1) * width, 2);
   }
+  // The first shell whose outer bound is at least sqrt(squared_distance).
+  std::uint8_t of_squared(double squared_distance) const {
+    int shell = 0;
+    for (double bound : outer_squared_) shell += squared_distance > bound ? 1 : 0;
+    return static_cast<std::uint8_t>(shell);
+  }
+
+ private:
+  std::array<double, near_field_shells - 1> outer_squared_{};
 };
 
 }  // namespace
@@ -114,7 +123,7 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
     shell_end.fill(0);
     shell_of_found.resize(found[t].size());
     for (std::size_t k = 0; k < found[t].size(); ++k)
-      ++shell_end[shell_of_found[k] = static_cast<std::uint8_t>(shells.of(std::sqrt(squared_distances[t][k])))];
+      ++shell_end[shell_of_found[k] = shells.of_squared(squared_distances[t][k])];
     std::partial_sum(shell_end.begin(), shell_end.end(), shell_end.begin());
     for (auto& end : shell_end) end += first;
     std::array<std::uint32_t, near_field_shells> next{};
@@ -126,7 +135,7 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
     const glm::dvec3 centre(queries[3 * t], queries[3 * t + 1], queries[3 * t + 2]);
     for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) {
       const double need = cutoff_m_ + glm::distance(occluders_.centres[receivers[lists.slots[k]]], centre) + 1e-3;
-      lists.scan_end[k] = shell_end[shells.of(need)];
+      lists.scan_end[k] = shell_end[shells.of_squared(need * need)];
     }
   }
   return lists;
