@@ -116,21 +116,17 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
   lists.occluders.resize(total);
   lists.start.reserve(tile_count + 1);
   lists.scan_end.resize(lists.slots.size());
-  std::array<std::uint32_t, near_field_shells> shell_end{};
+  std::array<std::uint32_t, near_field_shells> shell_size{}, shell_end{};
   std::vector<std::uint8_t> shell_of_found;
   for (std::size_t t = 0; t < tile_count; ++t) {
-    const std::uint32_t first = lists.start.back();
-    shell_end.fill(0);
+    shell_size.fill(0);
     shell_of_found.resize(found[t].size());
     for (std::size_t k = 0; k < found[t].size(); ++k)
-      ++shell_end[shell_of_found[k] = shells.of_squared(squared_distances[t][k])];
-    std::partial_sum(shell_end.begin(), shell_end.end(), shell_end.begin());
-    for (auto& end : shell_end) end += first;
-    std::array<std::uint32_t, near_field_shells> next{};
-    next[0] = first;
-    std::copy(shell_end.begin(), shell_end.end() - 1, next.begin() + 1);
+      ++shell_size[shell_of_found[k] = shells.of_squared(squared_distances[t][k])];
+    // Each shell's first place; placing its occluders moves it to the shell's end.
+    std::exclusive_scan(shell_size.begin(), shell_size.end(), shell_end.begin(), lists.start.back());
     for (std::size_t k = 0; k < found[t].size(); ++k)
-      lists.occluders[next[shell_of_found[k]]++] = static_cast<std::uint32_t>(found[t][k]);
+      lists.occluders[shell_end[shell_of_found[k]]++] = static_cast<std::uint32_t>(found[t][k]);
     lists.start.push_back(shell_end.back());
     const glm::dvec3 centre(queries[3 * t], queries[3 * t + 1], queries[3 * t + 2]);
     for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) {
