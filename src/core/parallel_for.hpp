@@ -44,4 +44,13 @@ void parallel_for(std::size_t count, Body body) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// parallel_for over [0, count) in blocks of `block` consecutive indices, body(first, last) per block: for loops
+// whose single iteration is too little work to hand to a thread (converting one root segment, one apex).
+template <typename Body>
+void parallel_for_blocks(std::size_t count, std::size_t block, Body body) {
+  block = std::max<std::size_t>(block, 1);
+  parallel_for((count + block - 1) / block,
+               [&](std::size_t b) { body(b * block, std::min(count, (b + 1) * block)); });
+}
+
 }  // namespace heliostand

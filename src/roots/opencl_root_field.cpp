@@ -10,6 +10,7 @@
 #include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
 #include "compute/opencl_context.hpp"
+#include "core/parallel_for.hpp"
 #include "roots/segment_grid.hpp"
 
 namespace heliostand::roots {
@@ -63,6 +64,8 @@ void write(cl::CommandQueue& queue, const cl::Buffer& buffer, const std::vector<
 // Segments this many at a time pass through the host's float staging arrays on their way to the device, so the
 // host never holds a float copy of the whole stand beside the device's.
 constexpr std::size_t segments_per_upload = std::size_t{1} << 16;
+// A worker thread's share of the host's conversions (segments of an upload, apices of a query).
+constexpr std::size_t items_per_block = std::size_t{1} << 12;
 
 }  // namespace
 
@@ -93,16 +96,20 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.end = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
   std::vector<cl_float4> middles, starts, ends;
   for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
-    const std::size_t last = std::min(segments.size(), first + segments_per_upload);
-    middles.clear();
-    starts.clear();
-    ends.clear();
-    for (std::size_t i = first; i < last; ++i) {
-      const RootSegmentLine segment = segments[static_cast<std::size_t>(s.grid.cell_segments[i])];
-      middles.push_back(to_float4(0.5 * (segment.start + segment.end) - s.frame, 0.5 * glm::length(segment.end - segment.start)));
-      starts.push_back(to_float4(segment.start - s.frame));
-      ends.push_back(to_float4(segment.end - s.frame));
-    }
+    const std::size_t count_here = std::min(segments.size() - first, segments_per_upload);
+    middles.resize(count_here);
+    starts.resize(count_here);
+    ends.resize(count_here);
+    // Entries convert independently (a gather from the trees' lists in cell order): blocks of them go to the worker
+    // threads, since this host work is not shortened by a faster device.
+    parallel_for_blocks(count_here, items_per_block, [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = from; k < to; ++k) {
+        const RootSegmentLine segment = segments[static_cast<std::size_t>(s.grid.cell_segments[first + k])];
+        middles[k] = to_float4(0.5 * (segment.start + segment.end) - s.frame, 0.5 * glm::length(segment.end - segment.start));
+        starts[k] = to_float4(segment.start - s.frame);
+        ends[k] = to_float4(segment.end - s.frame);
+      }
+    });
     write(s.cl.queue, s.middle, middles, first);
     write(s.cl.queue, s.start, starts, first);
     write(s.cl.queue, s.end, ends, first);
@@ -163,21 +170,21 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTi
   std::vector<std::size_t> order(tips.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::vector<std::size_t> tip_cell(tips.size());
-  for (std::size_t t = 0; t < tips.size(); ++t) tip_cell[t] = s.grid.cell_index(s.grid.cell_of(tips[t].position));
+  parallel_for_blocks(tips.size(), items_per_block, [&](std::size_t from, std::size_t to) {
+    for (std::size_t t = from; t < to; ++t) tip_cell[t] = s.grid.cell_index(s.grid.cell_of(tips[t].position));
+  });
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
-  const int per_tip = s.has_soil ? std::max(probes_per_tip, 0) : 0;
-  std::vector<cl_float4> tip_data, probe_data;
-  std::vector<cl_int2> excluded;
-  tip_data.reserve(tips.size());
-  excluded.reserve(tips.size());
-  probe_data.reserve(tips.size() * static_cast<std::size_t>(per_tip));
-  for (std::size_t t : order) {
-    const RootTipQuery& tip = tips[t];
-    tip_data.push_back(to_float4(tip.position - s.frame, tip.perception_radius_m));
-    excluded.push_back({{tip.excluded[0], tip.excluded[1]}});
-    for (int p = 0; p < per_tip; ++p) probe_data.push_back(to_float4(probes[t * per_tip + p]));
-  }
-  if (probe_data.empty()) probe_data.emplace_back();
+  const auto per_tip = static_cast<std::size_t>(s.has_soil ? std::max(probes_per_tip, 0) : 0);
+  std::vector<cl_float4> tip_data(tips.size()), probe_data(std::max<std::size_t>(tips.size() * per_tip, 1));
+  std::vector<cl_int2> excluded(tips.size());
+  parallel_for_blocks(tips.size(), items_per_block, [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      const RootTipQuery& tip = tips[order[i]];
+      tip_data[i] = to_float4(tip.position - s.frame, tip.perception_radius_m);
+      excluded[i] = {{tip.excluded[0], tip.excluded[1]}};
+      for (std::size_t p = 0; p < per_tip; ++p) probe_data[i * per_tip + p] = to_float4(probes[order[i] * per_tip + p]);
+    }
+  });
 
   const std::size_t tip_count = tips.size();
   const cl::Context& context = s.cl.context;
