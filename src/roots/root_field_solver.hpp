@@ -56,9 +56,13 @@ class SegmentList {
   // Visits every segment in order, (index, start, end), without the per-index part search of operator[].
   template <class Visit>
   void for_each(Visit&& visit) const {
-    for (const Part& part : parts_)
-      for (std::size_t j = 0; j < part.count; ++j)
-        visit(part.first + j, at(part.start, part.stride, j), at(part.end, part.stride, j));
+    for (std::size_t part = 0; part < parts_.size(); ++part) for_each_of_part(part, visit);
+  }
+  // The same for one part's segments only (the parts are disjoint: one thread per part visits every segment once).
+  template <class Visit>
+  void for_each_of_part(std::size_t part, Visit&& visit) const {
+    const Part& p = parts_[part];
+    for (std::size_t j = 0; j < p.count; ++j) visit(p.first + j, at(p.start, p.stride, j), at(p.end, p.stride, j));
   }
 
  private:
