@@ -38,13 +38,21 @@ running_xvfb() {
   alive "$1"
 }
 
+# When PID's process started (field 22 of /proc/PID/stat, counted after the command name): with the pid it names one
+# process, also once that process has lost its command line.
+started_at() { sed 's/^.*) //' "/proc/$1/stat" 2>/dev/null | cut -d' ' -f20; }
+
 stop_server() {
   [ -f "$dir/pid" ] || return 0
   pid=$(cat "$dir/pid")
   if running_xvfb "$pid"; then
+    born=$(started_at "$pid")
     kill "$pid" 2>/dev/null || true
     waited=0
-    while running_xvfb "$pid"; do
+    # Waits until the process is gone or a zombie, not until it stops looking like Xvfb: an exiting process loses its
+    # command line before it becomes a zombie, and a stop that returned then left Xvfb running (a CI run of
+    # 2026-11-26: check_xvfb_slow_start.sh; 13 of 600 start-stop pairs under load). The start time tells a reused pid.
+    while alive "$pid" && [ "$(started_at "$pid")" = "$born" ]; do
       waited=$((waited + 1))
       if [ "$waited" -eq 100 ]; then
         echo "warning: Xvfb $pid still running 10 s after SIGTERM; killing it" >&2
