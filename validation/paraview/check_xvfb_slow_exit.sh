@@ -36,19 +36,9 @@ exit 0;
 EOF
 chmod +x "$work/bin/Xvfb"
 
-server=$work/server
-status=0
-PATH="$work/bin:$PATH" sh "$here/xvfb.sh" start "$server" || status=$?
-if [ "$status" -ne 0 ]; then
-  if [ -f "$server/pid" ]; then kill "$(cat "$server/pid")" 2>/dev/null || true; fi
-  echo "FAIL: xvfb.sh start exited $status on the stand-in" >&2
-  exit 1
-fi
-pid=$(cat "$server/pid")
-sh "$here/xvfb.sh" stop "$server"
-if [ -d "/proc/$pid" ] && ! grep -q '^[^)]*) Z' "/proc/$pid/stat" 2>/dev/null; then
-  echo "FAIL: the stand-in $pid still running after xvfb.sh stop" >&2
-  kill -9 "$pid" 2>/dev/null || true
-  exit 1
-fi
+. "$here/xvfb_stand_in.sh"
+start_stand_in "$work" "the stand-in"
+pid=$(cat "$work/server/pid")
+sh "$here/xvfb.sh" stop "$work/server"
+expect_gone "$pid" "the stand-in"
 echo "passed: xvfb.sh stop waited for a server that exits a second after it loses Xvfb's command line"

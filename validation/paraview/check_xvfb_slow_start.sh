@@ -32,16 +32,9 @@ PATH='$PATH' exec Xvfb "\$@"
 EOF
 chmod +x "$work/bin/Xvfb"
 
+. "$here/xvfb_stand_in.sh"
+start_stand_in "$work" "a server that takes a second to exec"
 server=$work/server
-status=0
-PATH="$work/bin:$PATH" sh "$here/xvfb.sh" start "$server" || status=$?
-if [ "$status" -ne 0 ]; then
-  # A failed start leaves the stand-in running; it must not outlive the test. (`|| true`: under set -e a kill of a
-  # process already gone would end the script here, before it says why it failed.)
-  if [ -f "$server/pid" ]; then kill "$(cat "$server/pid")" 2>/dev/null || true; fi
-  echo "FAIL: xvfb.sh start exited $status on a server that takes a second to exec" >&2
-  exit 1
-fi
 display=$(cat "$server/display")
 pid=$(cat "$server/pid")
 sh "$here/xvfb.sh" stop "$server"
@@ -49,9 +42,5 @@ case $display in
   :[0-9]*) ;;
   *) echo "FAIL: display '$display' is not :N" >&2; exit 1 ;;
 esac
-if [ -d "/proc/$pid" ] && ! grep -q '^[^)]*) Z' "/proc/$pid/stat" 2>/dev/null; then
-  echo "FAIL: Xvfb $pid still running after xvfb.sh stop" >&2
-  kill "$pid" 2>/dev/null || true
-  exit 1
-fi
+expect_gone "$pid" Xvfb
 echo "passed: Xvfb started on $display after a 1 s exec delay and stopped"
