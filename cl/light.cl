@@ -34,17 +34,30 @@
 // hit and 0 to the others (a lane past `last` adds 0 to whatever it reads), so every patch sums the same terms in
 // the same order as a patch-by-patch loop would. Without contraction into fused multiply-adds the eight lanes
 // decide each hit exactly as the scalar test they replace did (same tables, docs/performance.md).
-inline void shade_patch_run(float* log_b, __global const float* axes, int first, int last, float3 d, float r2,
-                            float log_t) {
+inline int8 patch_run_hits(__global const float* axes, int p, int last, float3 d, float r2) {
 #pragma OPENCL FP_CONTRACT OFF
   const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  const float8 nx = vload8(0, axes + p), ny = vload8(0, axes + AXIS_STRIDE + p);
+  const float8 nz = vload8(0, axes + 2 * AXIS_STRIDE + p);
+  const float8 along = nx * d.x + ny * d.y + nz * d.z;
+  const float8 cx = d.y * nz - d.z * ny, cy = d.z * nx - d.x * nz, cz = d.x * ny - d.y * nx;
+  return along > 0.0f && cx * cx + cy * cy + cz * cz <= r2 && p + lane <= last;
+}
+
+inline void shade_patch_run(float* log_b, __global const float* axes, int first, int last, float3 d, float r2,
+                            float log_t) {
+  for (int p = first; p <= last; p += 8)
+    vstore8(vload8(0, log_b + p) + select((float8)(0.0f), (float8)(log_t), patch_run_hits(axes, p, last, d, r2)), 0,
+            log_b + p);
+}
+
+// The same run shading two skies at once (light_culled_and_alone: the tree alone's and the stand's).
+inline void shade_patch_run_twice(float* log_b, float* other_log_b, __global const float* axes, int first, int last,
+                                  float3 d, float r2, float log_t) {
   for (int p = first; p <= last; p += 8) {
-    const float8 nx = vload8(0, axes + p), ny = vload8(0, axes + AXIS_STRIDE + p);
-    const float8 nz = vload8(0, axes + 2 * AXIS_STRIDE + p);
-    const float8 along = nx * d.x + ny * d.y + nz * d.z;
-    const float8 cx = d.y * nz - d.z * ny, cy = d.z * nx - d.x * nz, cz = d.x * ny - d.y * nx;
-    const int8 hit = along > 0.0f && cx * cx + cy * cy + cz * cz <= r2 && p + lane <= last;
-    vstore8(vload8(0, log_b + p) + select((float8)(0.0f), (float8)(log_t), hit), 0, log_b + p);
+    const float8 added = select((float8)(0.0f), (float8)(log_t), patch_run_hits(axes, p, last, d, r2));
+    vstore8(vload8(0, log_b + p) + added, 0, log_b + p);
+    vstore8(vload8(0, other_log_b + p) + added, 0, other_log_b + p);
   }
 }
 
@@ -56,6 +69,16 @@ inline void shade_band(float* log_b, __global const float* axes, int v, int h_lo
   shade_patch_run(log_b, axes, row + h_lo + SKY_SECTORS, row + min(h_hi, -1) + SKY_SECTORS, d, r2, log_t);
   shade_patch_run(log_b, axes, row + max(h_lo, 0), row + min(h_hi, SKY_SECTORS - 1), d, r2, log_t);
   shade_patch_run(log_b, axes, row + max(h_lo, SKY_SECTORS) - SKY_SECTORS, row + h_hi - SKY_SECTORS, d, r2, log_t);
+}
+
+inline void shade_band_twice(float* log_b, float* other_log_b, __global const float* axes, int v, int h_lo, int h_hi,
+                             float3 d, float r2, float log_t) {
+  const int row = v * SKY_SECTORS;
+  shade_patch_run_twice(log_b, other_log_b, axes, row + h_lo + SKY_SECTORS, row + min(h_hi, -1) + SKY_SECTORS, d, r2,
+                        log_t);
+  shade_patch_run_twice(log_b, other_log_b, axes, row + max(h_lo, 0), row + min(h_hi, SKY_SECTORS - 1), d, r2, log_t);
+  shade_patch_run_twice(log_b, other_log_b, axes, row + max(h_lo, SKY_SECTORS) - SKY_SECTORS, row + h_hi - SKY_SECTORS,
+                        d, r2, log_t);
 }
 
 // Inverse trigonometry for the patch window only. Polynomials of Abramowitz & Stegun (1964), 4.4.45 (acos,
@@ -97,10 +120,15 @@ inline void batch_clear(OccluderBatch* batch) {
   batch->count = 0;
 }
 
-// Adds log(t) to every patch whose centre ray hits a ball of the batch. Only the patches whose centre can lie in a
-// ball's angular disc (half-angle asin(r/|d|)) are tested (seed 000 "scan-converts" each ball onto the receiver's
-// sky the same way), so the cost per ball is O(1) + the patches it covers.
-inline void shade_by_batch(float* log_b, __global const float* axes, const OccluderBatch* batch, float log_t) {
+// The patches each ball of a batch can cover: the sectors h_lo .. h_hi of the bands v_lo .. v_hi, or every patch
+// when the receiver sits inside the ball. Only the patches whose centre can lie in a ball's angular disc
+// (half-angle asin(r/|d|)) are tested (seed 000 "scan-converts" each ball onto the receiver's sky the same way), so
+// the cost per ball is O(1) + the patches it covers.
+typedef struct {
+  int v_lo[8], v_hi[8], h_lo[8], h_hi[8], inside[8];
+} BatchWindows;
+
+inline void batch_windows(const OccluderBatch* batch, BatchWindows* window) {
   const float8 dx = vload8(0, batch->x), dy = vload8(0, batch->y), dz = vload8(0, batch->z), r = vload8(0, batch->r);
   const float8 dist2 = dx * dx + dy * dy + dz * dz;
   const float8 inverse_dist = rsqrt(dist2);
@@ -123,18 +151,42 @@ inline void shade_by_batch(float* log_b, __global const float* axes, const Occlu
   h_lo = select(h_lo, (int8)(0), all_sectors);
   h_hi = select(h_hi, (int8)(SKY_SECTORS - 1), all_sectors);
   const int8 inside = dist2 <= r * r;  // the receiver sits inside this ball: shaded in every direction
-  int lane_v_lo[8], lane_v_hi[8], lane_h_lo[8], lane_h_hi[8], lane_inside[8];
-  vstore8(v_lo, 0, lane_v_lo), vstore8(v_hi, 0, lane_v_hi), vstore8(h_lo, 0, lane_h_lo), vstore8(h_hi, 0, lane_h_hi);
-  vstore8(inside, 0, lane_inside);
+  vstore8(v_lo, 0, window->v_lo), vstore8(v_hi, 0, window->v_hi);
+  vstore8(h_lo, 0, window->h_lo), vstore8(h_hi, 0, window->h_hi);
+  vstore8(inside, 0, window->inside);
+}
+
+// Adds log(t) to every patch whose centre ray hits a ball of the batch.
+inline void shade_by_batch(float* log_b, __global const float* axes, const OccluderBatch* batch, float log_t) {
+  BatchWindows window;
+  batch_windows(batch, &window);
   for (int l = 0; l < batch->count; ++l) {
-    if (lane_inside[l]) {
+    if (window.inside[l]) {
       for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
       continue;
     }
     const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
     const float r2 = batch->r[l] * batch->r[l];
-    for (int v = lane_v_lo[l]; v <= lane_v_hi[l]; ++v)
-      shade_band(log_b, axes, v, lane_h_lo[l], lane_h_hi[l], d, r2, log_t);
+    for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
+      shade_band(log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
+  }
+}
+
+// The same on two skies at once: each ball's window is found once and its hits shade both (light_culled_and_alone:
+// a ball of the receiver's own tree within the cut-off shades the tree alone's sky and the stand's).
+inline void shade_by_batch_twice(float* log_b, float* other_log_b, __global const float* axes,
+                                 const OccluderBatch* batch, float log_t) {
+  BatchWindows window;
+  batch_windows(batch, &window);
+  for (int l = 0; l < batch->count; ++l) {
+    if (window.inside[l]) {
+      for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t, other_log_b[p] += log_t;
+      continue;
+    }
+    const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
+    const float r2 = batch->r[l] * batch->r[l];
+    for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
+      shade_band_twice(log_b, other_log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
   }
 }
 
@@ -312,6 +364,79 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
     const float3 d = balls[j].xyz - centre;
     held_index[held] = j;
     held += (j != self && dot(d, d) <= cutoff2) ? 1 : 0;
+    if (held == 8) {
+      batch_fill(&batch, balls, held_index, held, centre);
+      batch_finish(&batch, log_b, axes, log_t);
+      held = 0;
+    }
+  }
+  batch_fill(&batch, balls, held_index, held, centre);
+  batch_finish(&batch, log_b, axes, log_t);
+  far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
+  out[slot] = light_sample(log_b, patches, b0);
+}
+
+// light_culled and light_each_alone in one pass (the stand's light and the open-grown light of its trees): the
+// receiver's own tree, balls[group_start[g] .. group_start[g + 1]), is projected once, in the tree's own frame
+// (`group_balls`, as light_each_alone reads them), and each hit shades both skies: the tree alone's always, the
+// stand's when the ball lies within the cut-off. The stand's candidate scan then skips every entry of the tree
+// (`entry_group`: the tree of each occluder entry, images included). The host fuses only where no image of a tree's
+// ball can come within the cut-off of another of its balls, so the stand's near field holds the same balls as
+// light_culled's; their offsets differ only by float round-off (the tree's frame is nearer). The tree-alone sky is
+// light_each_alone's, bit for bit: the same offsets, windows and hit tests, and every hit adds the same log t.
+__kernel void light_culled_and_alone(__global const float4* balls, __global const int* receivers,
+                                     __global const int2* receiver_scan, const int receiver_count,
+                                     __global const int* candidates, __global const int* entry_group,
+                                     __global const float4* group_balls, __global const int* group_start,
+                                     __global const float4* patches, __global const float* axes,
+                                     __global const float* b0, __global const float* b0_alone, const float log_t,
+                                     __global const float* far_by_cell, const float4 grid_origin,
+                                     const float4 grid_cell, const int4 grid_dims, const int periodic,
+                                     const float cutoff, const float one_minus_t, __global float4* out,
+                                     __global float4* out_alone) {
+  const int slot = get_global_id(0);
+  if (slot >= receiver_count) return;
+  const int self = receivers[slot];
+  const int g = entry_group[self];
+  const float cutoff2 = cutoff * cutoff;
+  float log_b[AXIS_STRIDE], alone_log_b[AXIS_STRIDE];
+  for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = alone_log_b[p] = 0.0f;
+  // The own tree in two batches: the balls within the cut-off shade both skies, those beyond the tree alone's only.
+  // Without a branch on the distance: each ball is written into both batches and counted in one (as held_index below).
+  OccluderBatch near, far;
+  batch_clear(&near);
+  batch_clear(&far);
+  const float3 own_centre = group_balls[self].xyz;
+  for (int j = group_start[g]; j < group_start[g + 1]; ++j) {
+    if (j == self) continue;
+    const float4 ball = group_balls[j];
+    const float3 d = ball.xyz - own_centre;
+    near.x[near.count] = d.x, near.y[near.count] = d.y, near.z[near.count] = d.z, near.r[near.count] = ball.w;
+    far.x[far.count] = d.x, far.y[far.count] = d.y, far.z[far.count] = d.z, far.r[far.count] = ball.w;
+    const int within = dot(d, d) <= cutoff2 ? 1 : 0;
+    near.count += within;
+    far.count += 1 - within;
+    if (near.count == 8) {
+      shade_by_batch_twice(alone_log_b, log_b, axes, &near, log_t);
+      near.count = 0;
+    }
+    if (far.count == 8) batch_finish(&far, alone_log_b, axes, log_t);
+  }
+  if (near.count > 0) shade_by_batch_twice(alone_log_b, log_b, axes, &near, log_t);
+  batch_finish(&far, alone_log_b, axes, log_t);
+  out_alone[slot] = light_sample(alone_log_b, patches, b0_alone);
+  // The other trees, as light_culled scans them.
+  const int2 scan = receiver_scan[slot];
+  const float3 centre = balls[self].xyz;
+  OccluderBatch batch;
+  batch_clear(&batch);
+  int held_index[8];
+  int held = 0;
+  for (int k = scan.x; k < scan.y; ++k) {
+    const int j = candidates[k];
+    const float3 d = balls[j].xyz - centre;
+    held_index[held] = j;
+    held += (entry_group[j] != g && dot(d, d) <= cutoff2) ? 1 : 0;
     if (held == 8) {
       batch_fill(&batch, balls, held_index, held, centre);
       batch_finish(&batch, log_b, axes, log_t);

@@ -25,6 +25,12 @@ std::vector<LightSample> LightSolver::solve_each_alone(std::span<const LeafBall>
   return samples;
 }
 
+std::optional<LightSolver::StandAndAlone> LightSolver::solve_with_each_alone(std::span<const LeafBall>,
+                                                                            std::span<const std::size_t>,
+                                                                            const LightSolver&) {
+  return std::nullopt;
+}
+
 void LightSolver::check_groups(std::span<const LeafBall> balls, std::span<const std::size_t> group_start) {
   const bool rising = std::is_sorted(group_start.begin(), group_start.end());
   if (group_start.empty() || group_start.front() != 0 || group_start.back() != balls.size() || !rising)

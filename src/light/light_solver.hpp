@@ -5,6 +5,7 @@
 // make_light_solver() (light/make_light_solver.hpp) picks the one of the run's compute backend (--device).
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -51,6 +52,17 @@ class LightSolver {
   // Solved group by group here; the OpenCL solver lights all groups in one launch.
   virtual std::vector<LightSample> solve_each_alone(std::span<const LeafBall> balls,
                                                     std::span<const std::size_t> group_start);
+  // The stand's light (this solver on all `balls`) and each group's light alone (`alone` on the groups, as
+  // solve_each_alone) in one pass, where this solver can do both at once; std::nullopt where it cannot (the caller
+  // then calls solve and alone.solve_each_alone). The OpenCL solver does both in one pass for a culled stand solve
+  // with an exact open-plot `alone` on the same device (cl/light.cl light_culled_and_alone).
+  struct StandAndAlone {
+    std::vector<LightSample> stand;
+    std::vector<LightSample> alone;
+  };
+  virtual std::optional<StandAndAlone> solve_with_each_alone(std::span<const LeafBall> balls,
+                                                             std::span<const std::size_t> group_start,
+                                                             const LightSolver& alone);
   const LightSolveStatistics& last_statistics() const { return statistics_; }
 
  protected:

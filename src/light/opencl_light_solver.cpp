@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -93,6 +94,29 @@ cl_float4 relative_ball(const glm::dvec3& centre, double radius, const glm::dvec
   return {{float(c.x), float(c.y), float(c.z), float(radius)}};
 }
 
+// Each ball relative to the middle of its own group, and the group it belongs to: how light_each_alone and
+// light_culled_and_alone read a tree, as if it were a stand of its own.
+struct GroupFrames {
+  std::vector<cl_float4> balls;
+  std::vector<cl_int> group;
+};
+
+GroupFrames group_frames(std::span<const LeafBall> balls, std::span<const std::size_t> group_start) {
+  GroupFrames frames{std::vector<cl_float4>(balls.size()), std::vector<cl_int>(balls.size())};
+  std::vector<glm::dvec3> centres;
+  for (std::size_t g = 0; g + 1 < group_start.size(); ++g) {
+    if (group_start[g] == group_start[g + 1]) continue;
+    centres.clear();
+    for (auto k = group_start[g]; k < group_start[g + 1]; ++k) centres.push_back(balls[k].centre);
+    const glm::dvec3 origin = float_origin(centres);
+    for (auto k = group_start[g]; k < group_start[g + 1]; ++k) {
+      frames.balls[k] = relative_ball(balls[k].centre, balls[k].radius, origin);
+      frames.group[k] = cl_int(g);
+    }
+  }
+  return frames;
+}
+
 // Entries per axis in SkyData::axes: every patch and eight zeros, since the kernels test runs of eight patches
 // (float8, cl/light.cl) from any patch. The kernels get it as the build option AXIS_STRIDE.
 std::size_t axis_stride(std::size_t patch_count) { return patch_count + 8; }
@@ -129,6 +153,15 @@ struct OpenCLLightSolver::Device {
   cl::Kernel far_field_layer;
   cl::Kernel far_field_by_cell;
   cl::Kernel each_alone;
+  cl::Kernel culled_and_alone;
+};
+
+// What the fused pass (light_culled_and_alone) adds to a culled solve: each receiver's group lit alone as `solver`
+// (the exact open-plot one) would light it.
+struct OpenCLLightSolver::AloneLight {
+  const OpenCLLightSolver& solver;
+  std::span<const std::size_t> group_start;
+  std::vector<LightSample> samples;
 };
 
 OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const compute::OpenCLContext& device)
@@ -149,6 +182,7 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
   device_->far_field_layer = cl::Kernel(device_->program, "far_field_layer");
   device_->far_field_by_cell = cl::Kernel(device_->program, "far_field_by_cell");
   device_->each_alone = cl::Kernel(device_->program, "light_each_alone");
+  device_->culled_and_alone = cl::Kernel(device_->program, "light_culled_and_alone");
 }
 
 OpenCLLightSolver::~OpenCLLightSolver() = default;
@@ -161,25 +195,13 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   std::vector<LightSample> samples(balls.size());
   if (balls.empty()) return samples;
   const auto start = Clock::now();
-  std::vector<cl_float4> ball_data(balls.size());
-  std::vector<cl_int> ball_group(balls.size());
-  std::vector<cl_int> starts(group_start.begin(), group_start.end());
-  std::vector<glm::dvec3> centres;
-  for (std::size_t g = 0; g + 1 < group_start.size(); ++g) {
-    if (group_start[g] == group_start[g + 1]) continue;
-    centres.clear();
-    for (auto k = group_start[g]; k < group_start[g + 1]; ++k) centres.push_back(balls[k].centre);
-    const glm::dvec3 origin = float_origin(centres);
-    for (auto k = group_start[g]; k < group_start[g + 1]; ++k) {
-      ball_data[k] = relative_ball(balls[k].centre, balls[k].radius, origin);
-      ball_group[k] = cl_int(g);
-    }
-  }
+  const GroupFrames frames = group_frames(balls, group_start);
+  const std::vector<cl_int> starts(group_start.begin(), group_start.end());
   const CelestialSphere sky(parameters_);
   const SkyData sky_data = sky_data_of(sky);
   const auto& context = device_->cl.context;
-  const cl::Buffer balls_buffer = read_only(context, ball_data);
-  const cl::Buffer groups_buffer = read_only(context, ball_group);
+  const cl::Buffer balls_buffer = read_only(context, frames.balls);
+  const cl::Buffer groups_buffer = read_only(context, frames.group);
   const cl::Buffer starts_buffer = read_only(context, starts);
   const cl::Buffer patches_buffer = read_only(context, sky_data.patches);
   const cl::Buffer axes_buffer = read_only(context, sky_data.axes);
@@ -212,6 +234,48 @@ std::string OpenCLLightSolver::name() const { return "opencl:" + device_->cl.des
 
 std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> balls,
                                                       std::span<const std::uint32_t> receivers) {
+  return solve_receivers(balls, receivers, nullptr);
+}
+
+bool OpenCLLightSolver::groups_clear_of_own_images(std::span<const LeafBall> balls,
+                                                   std::span<const std::size_t> group_start) const {
+  const PlotTorus torus = PlotTorus::from(parameters_);
+  if (!torus.periodic) return true;
+  // An image lies a plot width (depth) from its ball: it stays beyond the cut-off of every ball of its group when
+  // the group's centres span less than the plot less the cut-off (1 cm spare for the kernel's float test).
+  const glm::dvec2 reach = torus.size - parameters_.cutoff_m - 0.01;
+  for (std::size_t g = 0; g + 1 < group_start.size(); ++g) {
+    if (group_start[g] == group_start[g + 1]) continue;
+    glm::dvec2 low(balls[group_start[g]].centre), high = low;
+    for (auto k = group_start[g]; k < group_start[g + 1]; ++k)
+      low = glm::min(low, glm::dvec2(balls[k].centre)), high = glm::max(high, glm::dvec2(balls[k].centre));
+    if (high.x - low.x >= reach.x || high.y - low.y >= reach.y) return false;
+  }
+  return true;
+}
+
+std::optional<LightSolver::StandAndAlone> OpenCLLightSolver::solve_with_each_alone(
+    std::span<const LeafBall> balls, std::span<const std::size_t> group_start, const LightSolver& alone) {
+  const auto* open = dynamic_cast<const OpenCLLightSolver*>(&alone);
+  if (open == nullptr || parameters_.exact || !open->parameters_.exact || open->parameters_.periodic) return std::nullopt;
+  const LightParameters& q = open->parameters_;
+  const bool same_sky = q.sky_bands == parameters_.sky_bands && q.sky_sectors == parameters_.sky_sectors &&
+                        q.transmittance == parameters_.transmittance;
+  if (!same_sky || open->device_->cl.context() != device_->cl.context()) return std::nullopt;
+  check_groups(balls, group_start);
+  if (!groups_clear_of_own_images(balls, group_start)) return std::nullopt;
+  AloneLight light{*open, group_start, std::vector<LightSample>(balls.size())};
+  std::vector<std::uint32_t> everyone(balls.size());
+  std::iota(everyone.begin(), everyone.end(), 0u);
+  StandAndAlone both;
+  both.stand = solve_receivers(balls, everyone, &light);
+  both.alone = std::move(light.samples);
+  return both;
+}
+
+std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const LeafBall> balls,
+                                                            std::span<const std::uint32_t> receivers,
+                                                            AloneLight* alone) {
   check_receivers(balls, receivers);
   statistics_ = {};
   std::vector<LightSample> samples(receivers.size());
@@ -307,9 +371,24 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
   const cl::Buffer candidates_buffer =
       read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
   const double search_seconds = seconds_since(part_start);
+  // The fused pass: each group in its own frame, the group of every occluder entry (an image's is its ball's),
+  // and the sky of the open-grown solver (its B0: a different sky_scale rounds differently).
+  std::optional<cl::Buffer> group_balls_buffer, entry_group_buffer, group_start_buffer, alone_b0_buffer;
+  if (alone != nullptr) {
+    const GroupFrames frames = group_frames(balls, alone->group_start);
+    std::vector<cl_int> entry_group(set.centres.size());
+    for (std::size_t k = 0; k < entry_group.size(); ++k) entry_group[k] = frames.group[set.source[k]];
+    const SkyData alone_sky = sky_data_of(CelestialSphere(alone->solver.parameters_));
+    if (alone_sky.patches.size() != sky_data.patches.size() || alone_sky.axes != sky_data.axes)
+      throw std::logic_error("light solver: the open-grown sky's patches differ from the stand's");
+    group_balls_buffer = read_only(context, frames.balls);
+    entry_group_buffer = read_only(context, entry_group);
+    group_start_buffer = read_only(context, std::vector<cl_int>(alone->group_start.begin(), alone->group_start.end()));
+    alone_b0_buffer = read_only(context, alone_sky.b0);
+  }
 
   const auto start = Clock::now();
-  std::vector<cl_float4> result(receivers.size());
+  std::vector<cl_float4> result(receivers.size()), alone_result(alone != nullptr ? receivers.size() : 0);
   // Launches of at most `culled_chunk` receivers keep one launch's run time and output buffer bounded.
   for (std::size_t first = 0; first < receivers.size(); first += culled_chunk) {
     const std::size_t count = std::min(culled_chunk, receivers.size() - first);
@@ -318,16 +397,25 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     const cl::Buffer scan_buffer = read_only(context, std::vector<cl_int2>(receiver_scan.begin() + first,
                                                                            receiver_scan.begin() + first + count));
     cl::Buffer out(context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
-    auto& k = device_->culled;
+    const std::optional<cl::Buffer> alone_out =
+        alone != nullptr ? std::optional<cl::Buffer>(std::in_place, context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4))
+                         : std::nullopt;
+    auto& k = alone != nullptr ? device_->culled_and_alone : device_->culled;
     int arg = 0;
     k.setArg(arg++, balls_buffer);
     k.setArg(arg++, receivers_buffer);
     k.setArg(arg++, scan_buffer);
     k.setArg(arg++, cl_int(count));
     k.setArg(arg++, candidates_buffer);
+    if (alone != nullptr) {
+      k.setArg(arg++, *entry_group_buffer);
+      k.setArg(arg++, *group_balls_buffer);
+      k.setArg(arg++, *group_start_buffer);
+    }
     k.setArg(arg++, patches_buffer);
     k.setArg(arg++, axes_buffer);
     k.setArg(arg++, b0_buffer);
+    if (alone != nullptr) k.setArg(arg++, *alone_b0_buffer);
     k.setArg(arg++, log_t);
     k.setArg(arg++, depth_buffer);
     k.setArg(arg++, grid_origin_arg);
@@ -337,15 +425,22 @@ std::vector<LightSample> OpenCLLightSolver::solve_for(std::span<const LeafBall> 
     k.setArg(arg++, float(parameters_.cutoff_m));
     k.setArg(arg++, far_attenuation);
     k.setArg(arg++, out);
+    if (alone != nullptr) k.setArg(arg++, *alone_out);
     compute::launch(device_->cl, k, count);
     queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data() + first);
+    if (alone != nullptr)
+      queue.enqueueReadBuffer(*alone_out, CL_TRUE, 0, count * sizeof(cl_float4), alone_result.data() + first);
   }
+  auto sample_of = [](const cl_float4& r) {
+    LightSample sample;
+    sample.light = r.s[3];
+    sample.vector = glm::dvec3(r.s[0], r.s[1], r.s[2]);
+    return sample;
+  };
   std::size_t candidate_total = 0;
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    const auto& r = result[k].s;
-    LightSample& sample = samples[near.slots[k]];
-    sample.light = r[3];
-    sample.vector = glm::dvec3(r[0], r[1], r[2]);
+    samples[near.slots[k]] = sample_of(result[k]);
+    if (alone != nullptr) alone->samples[receivers[near.slots[k]]] = sample_of(alone_result[k]);
     candidate_total += std::size_t(receiver_scan[k].s[1] - receiver_scan[k].s[0]);
   }
   statistics_.evaluate_seconds = seconds_since(start);

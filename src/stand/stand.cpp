@@ -46,6 +46,10 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
   // where each tree's run starts, solve once, and hand each tree its slice back.
   std::vector<LeafBall> balls;
   std::vector<std::size_t> first_ball(trees_.size() + 1, 0);
+  // The open-grown reference is every tree alone (first_ball delimits each tree's balls). Where the stand's solver
+  // can, it lights the trees alone in the same pass (LightSolver::solve_with_each_alone), all timed as "light";
+  // otherwise the open-grown solve runs after it, on its own clock.
+  std::vector<LightSample> open_grown;
   const std::vector<LightSample> samples = timed(clock, "light", [&] {
     std::vector<std::vector<LeafBall>> own(trees_.size());
     parallel_for(trees_.size(), [&](std::size_t i) {
@@ -57,12 +61,14 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
       std::vector<LeafBall>().swap(own[i]);
     }
     first_ball[trees_.size()] = balls.size();
+    if (auto both = stand_solver.solve_with_each_alone(balls, first_ball, open_solver)) {
+      open_grown = std::move(both->alone);
+      return std::move(both->stand);
+    }
     return stand_solver.solve(balls);
   });
-  // The open-grown reference: every tree alone, all in one call (first_ball delimits each tree's balls).
-  const std::vector<LightSample> open_grown = timed(clock, "light (open grown)", [&] {
-    return open_solver.solve_each_alone(balls, first_ball);
-  });
+  if (open_grown.size() != balls.size())
+    open_grown = timed(clock, "light (open grown)", [&] { return open_solver.solve_each_alone(balls, first_ball); });
   parallel_for(trees_.size(), [&](std::size_t i) {
     StandTree& tree = trees_[i];
     if (!tree.alive()) return;

@@ -54,7 +54,9 @@ class Stand {
   // tree's crown alone under the reference sky (`open_solver`; the open-grown reference). Every leaf ball's
   // light, relative light (sky_scale × stand / open, at most 1) and light vector go onto its shoot, and each
   // tree's light budget is summed. Returns the number of leaf balls lit in the stand. With a clock, the stand's
-  // solve (gathering the balls included) is timed as stage "light" and the open-grown one as "light (open grown)".
+  // solve (gathering the balls included) is timed as stage "light" and the open-grown one as "light (open grown)";
+  // where the stand's solver lights the trees alone in the same pass (LightSolver::solve_with_each_alone), both are
+  // in "light".
   std::size_t illuminate(LightSolver& stand_solver, LightSolver& open_solver, double sky_scale = 1.0,
                          StageClock* clock = nullptr);
   // Step 3. Seed 000's response to this year's light (stand/light_response.hpp): new shoots bend toward their

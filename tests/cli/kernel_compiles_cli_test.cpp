@@ -47,7 +47,7 @@ TEST(KernelCompiles, ThreeYearsOfTheTinyStandCompileEachKernelForOneGroupSize) {
   ASSERT_TRUE(fs::is_directory(cache)) << "PoCL wrote no kernel cache at POCL_CACHE_DIR";
   const auto sizes = compiled_group_sizes(cache);
   // the roots kernel and the light kernels of the default solver all ran
-  for (const char* kernel : {"root_contact_field", "light_culled", "far_field_layer", "light_each_alone"})
+  for (const char* kernel : {"root_contact_field", "light_culled_and_alone", "far_field_layer"})
     EXPECT_TRUE(sizes.contains(kernel)) << kernel << " not in the kernel cache";
   for (const auto& [kernel, compiled] : sizes) {
     std::string list;
