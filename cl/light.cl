@@ -329,6 +329,36 @@ inline void far_field_attenuate(float* log_b, __global const float* by_cell, flo
   }
 }
 
+// The near field from the receiver's tile list: the candidates candidates[scan.x .. scan.y) within the cut-off
+// (squared: cutoff2) of the receiver at `centre` shade log_b, eight at a time, except the receiver itself and, when
+// own_group >= 0, every entry of that group (entry_group, read only then).
+// Without a branch on the distance: every candidate's index is written into the next free place, and only one
+// within the cut-off (about one in three of the candidates scanned on a grown canopy) claims it; a rejected one
+// is overwritten by the next. Once eight are held, their offsets are read again (from cache) into the batch.
+// Every hit adds the same log t, so neither this order nor the shells' changes a patch's sum. An unpredictable
+// branch per candidate cost more than the store; storing the index instead of the offset and radius measured
+// the same, and eight candidates' distances in SIMD lanes slower (docs/performance.md).
+inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __global const float4* balls,
+                                     __global const int* candidates, int2 scan, float3 centre, float cutoff2, int self,
+                                     __global const int* entry_group, int own_group, __global const float* axes,
+                                     float log_t) {
+  int held_index[8];
+  int held = 0;
+  for (int k = scan.x; k < scan.y; ++k) {
+    const int j = candidates[k];
+    const float3 d = balls[j].xyz - centre;
+    held_index[held] = j;
+    held += (j != self && (own_group < 0 || entry_group[j] != own_group) && dot(d, d) <= cutoff2) ? 1 : 0;
+    if (held == 8) {
+      batch_fill(batch, balls, held_index, held, centre);
+      batch_finish(batch, log_b, axes, log_t);
+      held = 0;
+    }
+  }
+  batch_fill(batch, balls, held_index, held, centre);
+  batch_finish(batch, log_b, axes, log_t);
+}
+
 // Culled: receivers come in tile order; each reads the part of its tile's candidate list (CSR) that can hold its
 // near field, scan = (first, end) (light/near_field.hpp: the list in shells of distance from the tile's centre),
 // keeps the occluders whose centre lies within the cut-off of its own (the reference solver's test, in float),
@@ -351,27 +381,7 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
-  // Without a branch on the distance: every candidate's index is written into the next free place, and only one
-  // within the cut-off (about one in three of the candidates scanned on a grown canopy) claims it; a rejected one
-  // is overwritten by the next. Once eight are held, their offsets are read again (from cache) into the batch.
-  // Every hit adds the same log t, so neither this order nor the shells' changes a patch's sum. An unpredictable
-  // branch per candidate cost more than the store; storing the index instead of the offset and radius measured
-  // the same, and eight candidates' distances in SIMD lanes slower (docs/performance.md).
-  int held_index[8];
-  int held = 0;
-  for (int k = scan.x; k < scan.y; ++k) {
-    const int j = candidates[k];
-    const float3 d = balls[j].xyz - centre;
-    held_index[held] = j;
-    held += (j != self && dot(d, d) <= cutoff2) ? 1 : 0;
-    if (held == 8) {
-      batch_fill(&batch, balls, held_index, held, centre);
-      batch_finish(&batch, log_b, axes, log_t);
-      held = 0;
-    }
-  }
-  batch_fill(&batch, balls, held_index, held, centre);
-  batch_finish(&batch, log_b, axes, log_t);
+  shade_by_tile_candidates(log_b, &batch, balls, candidates, scan, centre, cutoff2, self, candidates, -1, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }
@@ -402,7 +412,8 @@ __kernel void light_culled_and_alone(__global const float4* balls, __global cons
   float log_b[AXIS_STRIDE], alone_log_b[AXIS_STRIDE];
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = alone_log_b[p] = 0.0f;
   // The own tree in two batches: the balls within the cut-off shade both skies, those beyond the tree alone's only.
-  // Without a branch on the distance: each ball is written into both batches and counted in one (as held_index below).
+  // Without a branch on the distance: each ball is written into both batches and counted in one (as
+  // shade_by_tile_candidates holds candidates).
   OccluderBatch near, far;
   batch_clear(&near);
   batch_clear(&far);
@@ -430,21 +441,7 @@ __kernel void light_culled_and_alone(__global const float4* balls, __global cons
   const float3 centre = balls[self].xyz;
   OccluderBatch batch;
   batch_clear(&batch);
-  int held_index[8];
-  int held = 0;
-  for (int k = scan.x; k < scan.y; ++k) {
-    const int j = candidates[k];
-    const float3 d = balls[j].xyz - centre;
-    held_index[held] = j;
-    held += (entry_group[j] != g && dot(d, d) <= cutoff2) ? 1 : 0;
-    if (held == 8) {
-      batch_fill(&batch, balls, held_index, held, centre);
-      batch_finish(&batch, log_b, axes, log_t);
-      held = 0;
-    }
-  }
-  batch_fill(&batch, balls, held_index, held, centre);
-  batch_finish(&batch, log_b, axes, log_t);
+  shade_by_tile_candidates(log_b, &batch, balls, candidates, scan, centre, cutoff2, self, entry_group, g, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }
