@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/parallel_for.hpp"
+
 namespace heliostand {
 namespace {
 
@@ -28,41 +30,51 @@ void add_shadows_along(int axis, const OccluderSet& occluders, const VoxelGrid& 
         .push_back(static_cast<std::uint32_t>(k));
   std::vector<double> kept(256);  // t^n
   for (int n = 0; n < 256; ++n) kept[n] = std::pow(t, n);
-  std::vector<std::uint8_t> shadows(std::size_t(nu) * nv);
-  for (int s = 0; s < grid.dims[axis]; ++s) {
-    if (slabs[s].empty()) continue;
-    std::fill(shadows.begin(), shadows.end(), 0);
-    for (const auto k : slabs[s]) {
-      const double cu = (occluders.centres[k][u] - grid.origin[u]) / pu - 0.5;  // in pixel-centre units
-      const double cv = (occluders.centres[k][v] - grid.origin[v]) / pv - 0.5;
-      const double r = occluders.radii[k];
-      for (int j = static_cast<int>(std::ceil(cv - r / pv)); j <= static_cast<int>(std::floor(cv + r / pv)); ++j)
-        for (int i = static_cast<int>(std::ceil(cu - r / pu)); i <= static_cast<int>(std::floor(cu + r / pu)); ++i) {
-          const double du = (i - cu) * pu, dv = (j - cv) * pv;
-          if (du * du + dv * dv > r * r) continue;
-          const int iu = wraps_u ? wrap_cell(i, nu) : i, iv = wraps_v ? wrap_cell(j, nv) : j;
-          if (iu < 0 || iu >= nu || iv < 0 || iv >= nv) continue;
-          auto& n = shadows[std::size_t(iv) * nu + iu];
-          if (n < 255) ++n;
+  // A slab writes only its own cells: blocks of slabs are rasterised on the worker threads, each block on a raster
+  // of its own, and every cell gets the same sums as in one loop over the slabs in order. Four blocks a thread,
+  // fewer where that many rasters would pass 256 MB.
+  const std::size_t slab_count = std::size_t(grid.dims[axis]);
+  const std::size_t raster_bytes = std::max<std::size_t>(1, std::size_t(nu) * nv);
+  const std::size_t blocks = std::clamp<std::size_t>((std::size_t(256) << 20) / raster_bytes, 1,
+                                                     4 * std::size_t(worker_threads()));
+  const std::size_t block = (slab_count + blocks - 1) / blocks;
+  parallel_for_blocks(slab_count, block, [&](std::size_t first, std::size_t last) {
+    std::vector<std::uint8_t> shadows(std::size_t(nu) * nv);
+    for (int s = int(first); s < int(last); ++s) {
+      if (slabs[s].empty()) continue;
+      std::fill(shadows.begin(), shadows.end(), 0);
+      for (const auto k : slabs[s]) {
+        const double cu = (occluders.centres[k][u] - grid.origin[u]) / pu - 0.5;  // in pixel-centre units
+        const double cv = (occluders.centres[k][v] - grid.origin[v]) / pv - 0.5;
+        const double r = occluders.radii[k];
+        for (int j = static_cast<int>(std::ceil(cv - r / pv)); j <= static_cast<int>(std::floor(cv + r / pv)); ++j)
+          for (int i = static_cast<int>(std::ceil(cu - r / pu)); i <= static_cast<int>(std::floor(cu + r / pu)); ++i) {
+            const double du = (i - cu) * pu, dv = (j - cv) * pv;
+            if (du * du + dv * dv > r * r) continue;
+            const int iu = wraps_u ? wrap_cell(i, nu) : i, iv = wraps_v ? wrap_cell(j, nv) : j;
+            if (iu < 0 || iu >= nu || iv < 0 || iv >= nv) continue;
+            auto& n = shadows[std::size_t(iv) * nu + iu];
+            if (n < 255) ++n;
+          }
+      }
+      for (int b = 0; b < grid.dims[v]; ++b)
+        for (int a = 0; a < grid.dims[u]; ++a) {
+          double gap = 0, count = 0;
+          for (int j = b * P; j < (b + 1) * P; ++j)
+            for (int i = a * P; i < (a + 1) * P; ++i) {
+              const int n = shadows[std::size_t(j) * nu + i];
+              gap += kept[n];
+              count += n;
+            }
+          if (count == 0) continue;
+          int at[3];
+          at[axis] = s, at[u] = a, at[v] = b;
+          const std::size_t cell = grid.index(at[0], at[1], at[2]);
+          log_gap[cell] -= std::log(gap / (P * P));
+          hits[cell] += count / (P * P);
         }
     }
-    for (int b = 0; b < grid.dims[v]; ++b)
-      for (int a = 0; a < grid.dims[u]; ++a) {
-        double gap = 0, count = 0;
-        for (int j = b * P; j < (b + 1) * P; ++j)
-          for (int i = a * P; i < (a + 1) * P; ++i) {
-            const int n = shadows[std::size_t(j) * nu + i];
-            gap += kept[n];
-            count += n;
-          }
-        if (count == 0) continue;
-        int at[3];
-        at[axis] = s, at[u] = a, at[v] = b;
-        const std::size_t cell = grid.index(at[0], at[1], at[2]);
-        log_gap[cell] -= std::log(gap / (P * P));
-        hits[cell] += count / (P * P);
-      }
-  }
+  });
 }
 
 }  // namespace
