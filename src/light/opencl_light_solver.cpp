@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <stdexcept>
 
 #include <glm/common.hpp>
 
@@ -94,15 +93,17 @@ cl_float4 relative_ball(const glm::dvec3& centre, double radius, const glm::dvec
   return {{float(c.x), float(c.y), float(c.z), float(radius)}};
 }
 
-// Each ball relative to the middle of its own group, and the group it belongs to: how light_each_alone and
-// light_culled_and_alone read a tree, as if it were a stand of its own.
+// Each ball relative to the middle of its own group, the group it belongs to, and where each group starts: how
+// light_each_alone and light_culled_and_alone read a tree, as if it were a stand of its own.
 struct GroupFrames {
   std::vector<cl_float4> balls;
   std::vector<cl_int> group;
+  std::vector<cl_int> group_start;
 };
 
 GroupFrames group_frames(std::span<const LeafBall> balls, std::span<const std::size_t> group_start) {
-  GroupFrames frames{std::vector<cl_float4>(balls.size()), std::vector<cl_int>(balls.size())};
+  GroupFrames frames{std::vector<cl_float4>(balls.size()), std::vector<cl_int>(balls.size()),
+                     std::vector<cl_int>(group_start.begin(), group_start.end())};
   std::vector<glm::dvec3> centres;
   for (std::size_t g = 0; g + 1 < group_start.size(); ++g) {
     if (group_start[g] == group_start[g + 1]) continue;
@@ -115,6 +116,14 @@ GroupFrames group_frames(std::span<const LeafBall> balls, std::span<const std::s
     }
   }
   return frames;
+}
+
+// A receiver's result as the kernels write it, (light vector, light), read back.
+LightSample sample_of(const cl_float4& result) {
+  LightSample sample;
+  sample.light = result.s[3];
+  sample.vector = glm::dvec3(result.s[0], result.s[1], result.s[2]);
+  return sample;
 }
 
 // Entries per axis in SkyData::axes: every patch and eight zeros, since the kernels test runs of eight patches
@@ -196,13 +205,12 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   if (balls.empty()) return samples;
   const auto start = Clock::now();
   const GroupFrames frames = group_frames(balls, group_start);
-  const std::vector<cl_int> starts(group_start.begin(), group_start.end());
   const CelestialSphere sky(parameters_);
   const SkyData sky_data = sky_data_of(sky);
   const auto& context = device_->cl.context;
   const cl::Buffer balls_buffer = read_only(context, frames.balls);
   const cl::Buffer groups_buffer = read_only(context, frames.group);
-  const cl::Buffer starts_buffer = read_only(context, starts);
+  const cl::Buffer starts_buffer = read_only(context, frames.group_start);
   const cl::Buffer patches_buffer = read_only(context, sky_data.patches);
   const cl::Buffer axes_buffer = read_only(context, sky_data.axes);
   const cl::Buffer b0_buffer = read_only(context, sky_data.b0);
@@ -221,10 +229,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   compute::launch(device_->cl, k, balls.size());
   std::vector<cl_float4> result(balls.size());
   device_->cl.queue.enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    samples[i].light = result[i].s[3];
-    samples[i].vector = glm::dvec3(result[i].s[0], result[i].s[1], result[i].s[2]);
-  }
+  for (std::size_t i = 0; i < balls.size(); ++i) samples[i] = sample_of(result[i]);
   statistics_.evaluate_seconds = seconds_since(start);
   return samples;
 }
@@ -302,11 +307,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   auto collect = [&](const cl::Buffer& out, std::size_t first_slot, std::size_t count) {
     std::vector<cl_float4> result(count);
     queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data());
-    for (std::size_t k = 0; k < count; ++k) {
-      const auto& r = result[k].s;
-      samples[first_slot + k].light = r[3];
-      samples[first_slot + k].vector = glm::dvec3(r[0], r[1], r[2]);
-    }
+    for (std::size_t k = 0; k < count; ++k) samples[first_slot + k] = sample_of(result[k]);
   };
 
   if (parameters_.exact) {
@@ -372,19 +373,17 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
       read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
   const double search_seconds = seconds_since(part_start);
   // The fused pass: each group in its own frame, the group of every occluder entry (an image's is its ball's),
-  // and the sky of the open-grown solver (its B0: a different sky_scale rounds differently).
+  // and the open-grown solver's B0 (a different sky_scale rounds differently; the patches are the stand's, since
+  // solve_with_each_alone fuses only with the same bands and sectors).
   std::optional<cl::Buffer> group_balls_buffer, entry_group_buffer, group_start_buffer, alone_b0_buffer;
   if (alone != nullptr) {
     const GroupFrames frames = group_frames(balls, alone->group_start);
     std::vector<cl_int> entry_group(set.centres.size());
     for (std::size_t k = 0; k < entry_group.size(); ++k) entry_group[k] = frames.group[set.source[k]];
-    const SkyData alone_sky = sky_data_of(CelestialSphere(alone->solver.parameters_));
-    if (alone_sky.patches.size() != sky_data.patches.size() || alone_sky.axes != sky_data.axes)
-      throw std::logic_error("light solver: the open-grown sky's patches differ from the stand's");
     group_balls_buffer = read_only(context, frames.balls);
     entry_group_buffer = read_only(context, entry_group);
-    group_start_buffer = read_only(context, std::vector<cl_int>(alone->group_start.begin(), alone->group_start.end()));
-    alone_b0_buffer = read_only(context, alone_sky.b0);
+    group_start_buffer = read_only(context, frames.group_start);
+    alone_b0_buffer = read_only(context, sky_data_of(CelestialSphere(alone->solver.parameters_)).b0);
   }
 
   const auto start = Clock::now();
@@ -431,12 +430,6 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
     if (alone != nullptr)
       queue.enqueueReadBuffer(*alone_out, CL_TRUE, 0, count * sizeof(cl_float4), alone_result.data() + first);
   }
-  auto sample_of = [](const cl_float4& r) {
-    LightSample sample;
-    sample.light = r.s[3];
-    sample.vector = glm::dvec3(r.s[0], r.s[1], r.s[2]);
-    return sample;
-  };
   std::size_t candidate_total = 0;
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     samples[near.slots[k]] = sample_of(result[k]);

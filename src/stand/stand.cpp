@@ -50,6 +50,7 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
   // can, it lights the trees alone in the same pass (LightSolver::solve_with_each_alone), all timed as "light";
   // otherwise the open-grown solve runs after it, on its own clock.
   std::vector<LightSample> open_grown;
+  bool lit_alone = false;
   const std::vector<LightSample> samples = timed(clock, "light", [&] {
     std::vector<std::vector<LeafBall>> own(trees_.size());
     parallel_for(trees_.size(), [&](std::size_t i) {
@@ -63,11 +64,12 @@ std::size_t Stand::illuminate(LightSolver& stand_solver, LightSolver& open_solve
     first_ball[trees_.size()] = balls.size();
     if (auto both = stand_solver.solve_with_each_alone(balls, first_ball, open_solver)) {
       open_grown = std::move(both->alone);
+      lit_alone = true;
       return std::move(both->stand);
     }
     return stand_solver.solve(balls);
   });
-  if (open_grown.size() != balls.size())
+  if (!lit_alone)
     open_grown = timed(clock, "light (open grown)", [&] { return open_solver.solve_each_alone(balls, first_ball); });
   parallel_for(trees_.size(), [&](std::size_t i) {
     StandTree& tree = trees_[i];
@@ -183,8 +185,13 @@ std::size_t Stand::release_gone_crowns(const std::function<bool(const StandTree&
 
 StandMeasures Stand::measures() const {
   std::vector<TreeMeasurement> living;
-  for (const auto& tree : trees_)
-    if (tree.alive()) living.push_back({tree.conifer.dbh_cm(), tree.conifer.height_m(), 0.0});
+  for (const auto& tree : trees_) {
+    if (!tree.alive()) continue;
+    TreeMeasurement measured;  // volume and species are not needed for basal area and top height
+    measured.dbh_cm = tree.conifer.dbh_cm();
+    measured.height_m = tree.conifer.height_m();
+    living.push_back(measured);
+  }
   const StandMetrics metrics = measure_stand(living, plot_area_ha_);
   return {metrics.basal_area_m2_per_ha, metrics.top_height_m};
 }
