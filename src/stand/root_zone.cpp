@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "core/parallel_for.hpp"
 #include "roots/make_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
 #include "roots/soil_file.hpp"
@@ -88,19 +89,21 @@ void RootZone::drop_gone_trees(const Stand& stand) {
 
 void RootZone::couple(Stand& stand) {
   drop_gone_trees(stand);
-  for (std::size_t i = 0; i < stand.trees().size(); ++i) {
+  // Each tree's balance reads only its own crown and roots and the soil as it stands (no tree takes up water here):
+  // the trees in parallel, the same answer on any number of threads.
+  parallel_for(stand.trees().size(), [&](std::size_t i) {
     StandTree& tree = stand.tree_at(i);
-    if (!tree.alive() || i >= roots_.size() || !roots_[i]) continue;
+    if (!tree.alive() || i >= roots_.size() || !roots_[i]) return;
     if (!settings_.coupling.enabled) {
       balance_[i] = PathBalance{};
-      continue;
+      return;
     }
     const PathValues light = light_by_path(tree.conifer, tree.leaf_ball_light(), sky_scale_);
     const PathValues uptake = roots_[i]->available_uptake_by_path(soil_);
     balance_[i] = balance_paths(light, uptake, settings_.coupling);
     roots_[i]->set_branching_bonus(balance_[i]->root);
     tree.conifer.set_branching_bonus(balance_[i]->branch);
-  }
+  });
 }
 
 void RootZone::prune(const Stand& stand) {

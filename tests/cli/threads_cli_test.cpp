@@ -1,7 +1,8 @@
 // `--threads` (core/parallel_for.hpp): the per-tree work — crowns growing, their light response, the leaf balls
-// gathered for the solver, the root buds and their moisture probes, new root segments — runs on several threads,
-// and the answers must not depend on how many. The tiny stand with roots, grown two years by one thread and by
-// three, must write the same bytes in every file but run.json (which records the command line and the clock).
+// gathered for the solver, the root buds and their moisture probes, new root segments, each tree's crown–root
+// balance — runs on several threads, and the answers must not depend on how many. The tiny stand with roots, grown
+// two years by one thread and by three, must write the same bytes in every file but run.json (which records the
+// command line and the clock).
 #include <gtest/gtest.h>
 
 #include <fstream>
