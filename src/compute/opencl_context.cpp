@@ -80,6 +80,7 @@ std::optional<OpenCLContext> open_opencl_device(std::optional<int> index) {
   OpenCLContext context;
   context.index = chosen;
   context.device = all[chosen].device;
+  context.type = context.device.getInfo<CL_DEVICE_TYPE>();
   context.context = cl::Context(context.device);
   context.queue = cl::CommandQueue(context.context, context.device);
   context.description = all[chosen].platform.getInfo<CL_PLATFORM_NAME>() + " / " +

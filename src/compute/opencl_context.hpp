@@ -14,6 +14,9 @@ struct OpenCLContext {
   cl::Context context;
   cl::CommandQueue queue;
   std::string description;  // "Portable Computing Language / pthread-..." for logs and solver names
+  // CL_DEVICE_TYPE_CPU, _GPU, ... of `device`: where a kernel's cost differs between the two, a solver chooses by it
+  // (OpenCLLightSolver::solve_with_each_alone).
+  cl_device_type type = 0;
   int index = 0;
 };
 

@@ -261,6 +261,10 @@ bool OpenCLLightSolver::groups_clear_of_own_images(std::span<const LeafBall> bal
 
 std::optional<LightSolver::StandAndAlone> OpenCLLightSolver::solve_with_each_alone(
     std::span<const LeafBall> balls, std::span<const std::size_t> group_start, const LightSolver& alone) {
+  // Only on a CPU device: there the one pass saves projecting each tree's own balls twice (the hectare's light 0.92
+  // of two passes on PoCL), while on a GPU its two skies per work item cost more than the second launch (an H100:
+  // 1.14x two passes' light in both of two pairs, docs/performance.md "The one pass on a GPU").
+  if (!(device_->cl.type & CL_DEVICE_TYPE_CPU)) return std::nullopt;
   const auto* open = dynamic_cast<const OpenCLLightSolver*>(&alone);
   if (open == nullptr || parameters_.exact || !open->parameters_.exact || open->parameters_.periodic) return std::nullopt;
   const LightParameters& q = open->parameters_;

@@ -23,9 +23,10 @@ class OpenCLLightSolver final : public LightSolver {
   // Exact, open plots: every group in one launch (cl/light.cl light_each_alone); otherwise group by group.
   std::vector<LightSample> solve_each_alone(std::span<const LeafBall> balls,
                                             std::span<const std::size_t> group_start) override;
-  // One pass (cl/light.cl light_culled_and_alone) when this solver is culled, `alone` is an exact open-plot
-  // OpenCLLightSolver on the same device with the same sky patches and transmittance, and, on a periodic plot, no
-  // group is so wide that the image of one of its balls comes within the cut-off of another; std::nullopt otherwise.
+  // One pass (cl/light.cl light_culled_and_alone) when the device is a CPU (on a GPU two passes are quicker), this
+  // solver is culled, `alone` is an exact open-plot OpenCLLightSolver on the same device with the same sky patches
+  // and transmittance, and, on a periodic plot, no group is so wide that the image of one of its balls comes within
+  // the cut-off of another; std::nullopt otherwise.
   // The alone samples are solve_each_alone's bit for bit; the stand's are solve's up to float round-off (each
   // tree's own balls are offset in the tree's own frame, docs/light.md "The stand and each tree alone in one pass").
   std::optional<StandAndAlone> solve_with_each_alone(std::span<const LeafBall> balls,

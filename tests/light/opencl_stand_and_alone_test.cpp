@@ -4,13 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "compute/opencl_context.hpp"
 #include "compute/opencl_test_backend.hpp"
 #include "light/celestial_sphere.hpp"
-#include "light/make_light_solver.hpp"
+#include "light/opencl_light_solver.hpp"
 #include "light/reference_light_solver.hpp"
 #include "light_test_stands.hpp"
 
@@ -40,6 +42,20 @@ LightParameters alone_parameters(const LightParameters& stand) {
   p.periodic = false;
   p.sky_scale = 1.0;
   return p;
+}
+
+// This machine's OpenCL device, called a CPU or a GPU. The one pass runs only on a CPU device, so the tests of its
+// answers call the device a CPU whatever it is: the kernel is the same on every device.
+std::optional<compute::OpenCLContext> device_as(cl_device_type type) {
+  const auto backend = compute::opencl_backend_for_test();
+  if (!backend) return std::nullopt;
+  compute::OpenCLContext device = *backend->opencl();
+  device.type = type;
+  return device;
+}
+
+std::unique_ptr<LightSolver> solver_on(const compute::OpenCLContext& device, const LightParameters& parameters) {
+  return std::make_unique<OpenCLLightSolver>(parameters, device);
 }
 
 struct Trees {
@@ -72,10 +88,10 @@ Trees columns_of(const std::vector<LeafBall>& stand, bool straddle) {
 class StandAndAloneTest : public ::testing::TestWithParam<bool> {
  protected:
   void SetUp() override {
-    device_ = compute::opencl_backend_for_test();
+    device_ = device_as(CL_DEVICE_TYPE_CPU);
     if (!device_) GTEST_SKIP() << "no OpenCL device";
   }
-  std::optional<compute::ComputeBackend> device_;
+  std::optional<compute::OpenCLContext> device_;
 };
 
 // The alone samples are light_each_alone's bit for bit, and on these stands (no ray decided within round-off) the
@@ -87,8 +103,8 @@ TEST_P(StandAndAloneTest, OnePassGivesTheStandSolveAndEachTreeAlone) {
   const CelestialSphere sky(stand_p);
   const Trees trees = columns_of(testing::random_stand(220, plot_m, 0.15, 0.45, 5, sky, periodic), periodic);
   ASSERT_EQ(trees.group_start.size(), 17u);
-  const auto stand_solver = make_light_solver(*device_, stand_p);
-  const auto alone_solver = make_light_solver(*device_, alone_p);
+  const auto stand_solver = solver_on(*device_, stand_p);
+  const auto alone_solver = solver_on(*device_, alone_p);
   const auto both = stand_solver->solve_with_each_alone(trees.balls, trees.group_start, *alone_solver);
   ASSERT_TRUE(both.has_value()) << "the OpenCL solver declined a stand it can light in one pass";
   const auto stand = stand_solver->solve(trees.balls);
@@ -115,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(Plots, StandAndAloneTest, ::testing::Bool(),
 
 // Where one pass would not give the two solves' answers, the solver says so and the caller solves twice.
 TEST(StandAndAlone, DeclinedWhereOnePassWouldNotGiveTheSameLight) {
-  const auto device = compute::opencl_backend_for_test();
+  const auto device = device_as(CL_DEVICE_TYPE_CPU);
   if (!device) GTEST_SKIP() << "no OpenCL device";
   const LightParameters stand_p = stand_parameters(true);
   const LightParameters alone_p = alone_parameters(stand_p);
@@ -123,7 +139,7 @@ TEST(StandAndAlone, DeclinedWhereOnePassWouldNotGiveTheSameLight) {
   const Trees trees = columns_of(testing::random_stand(60, plot_m, 0.15, 0.45, 6, sky, true), true);
   auto declined = [&](const LightParameters& stand, const LightParameters& alone, const std::vector<LeafBall>& balls,
                       const std::vector<std::size_t>& groups) {
-    return !make_light_solver(*device, stand)->solve_with_each_alone(balls, groups, *make_light_solver(*device, alone));
+    return !solver_on(*device, stand)->solve_with_each_alone(balls, groups, *solver_on(*device, alone));
   };
   EXPECT_FALSE(declined(stand_p, alone_p, trees.balls, trees.group_start));  // the case that works
   LightParameters exact_stand = stand_p;
@@ -150,11 +166,26 @@ TEST(StandAndAlone, DeclinedWhereOnePassWouldNotGiveTheSameLight) {
   EXPECT_FALSE(declined(open_stand, alone_p, wide, {0, 2})) << "an open plot has no images";
   // the reference solver always solves twice
   ReferenceLightSolver reference(stand_p);
-  EXPECT_FALSE(reference.solve_with_each_alone(trees.balls, trees.group_start, *make_light_solver(*device, alone_p)));
-  EXPECT_THROW(make_light_solver(*device, stand_p)
-                   ->solve_with_each_alone(trees.balls, std::vector<std::size_t>{0, 5},
-                                           *make_light_solver(*device, alone_p)),
+  EXPECT_FALSE(reference.solve_with_each_alone(trees.balls, trees.group_start, *solver_on(*device, alone_p)));
+  EXPECT_THROW(solver_on(*device, stand_p)
+                   ->solve_with_each_alone(trees.balls, std::vector<std::size_t>{0, 5}, *solver_on(*device, alone_p)),
                std::invalid_argument);
+}
+
+// On a GPU the one pass's two skies per work item cost more than a second launch (docs/performance.md "The one pass
+// on a GPU"): the solver declines there, and only there, and the caller solves twice.
+TEST(StandAndAlone, OnePassOnlyOnACpuDevice) {
+  const LightParameters stand_p = stand_parameters(false);
+  const LightParameters alone_p = alone_parameters(stand_p);
+  const CelestialSphere sky(stand_p);
+  const Trees trees = columns_of(testing::random_stand(60, plot_m, 0.15, 0.45, 6, sky, false), false);
+  for (const cl_device_type type : {CL_DEVICE_TYPE_CPU, CL_DEVICE_TYPE_GPU, CL_DEVICE_TYPE_ACCELERATOR}) {
+    const auto device = device_as(type);
+    if (!device) GTEST_SKIP() << "no OpenCL device";
+    const auto both =
+        solver_on(*device, stand_p)->solve_with_each_alone(trees.balls, trees.group_start, *solver_on(*device, alone_p));
+    EXPECT_EQ(both.has_value(), type == CL_DEVICE_TYPE_CPU) << "device type " << type;
+  }
 }
 
 }  // namespace
