@@ -15,6 +15,12 @@ set_tests_properties(validation.stand_light.findings PROPERTIES
   TIMEOUT 1200 LABELS "validation" FIXTURES_SETUP heliostand_stand_light_runs
   ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
 
+# The numerics options are checked before any run: an impossible far-field cell is refused by name.
+add_test(NAME validation.stand_light.refuses_bad_far_field_cell
+         COMMAND stand_light_validation ${PROJECT_BINARY_DIR}/validation/stand_light_refused --far-field-cell-m 0)
+set_tests_properties(validation.stand_light.refuses_bad_far_field_cell PROPERTIES
+  LABELS "validation" PASS_REGULAR_EXPRESSION "--far-field-cell-m: Value 0 not in range")
+
 foreach(run self_thinning)
   add_test(NAME validation.stand_light.render_${run}
            COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh

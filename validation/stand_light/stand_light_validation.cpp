@@ -7,12 +7,14 @@
 //   2. Self-thinning: a dense unthinned young plantation (generated here: 64 trees at 1.5 m spacing, 4 444
 //      stems/ha, heights spread ±30 %) loses its suppressed trees to light, the shorter ones.
 //
-//   stand_light_validation OUT_DIR [--years N] [--cutoff-m M] [--seed S]
+//   stand_light_validation OUT_DIR [--years N] [--cutoff-m M] [--far-field-cell-m C] [--seed S]
 //
 // --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m; default the model's) in all runs:
-// the findings measured at another cut-off (docs/light.md "2 m tried and not kept"). The gap is grown with
-// four seeds (the example's own and 2, 3, 4) and judged on their mean, since one draw varies as much as the
-// effect; --seed S replaces them and the dense plantation's own seed (3) by S alone: one draw of each finding.
+// the findings measured at another cut-off (docs/light.md "2 m tried and not kept"); --far-field-cell-m likewise
+// the far field's voxel edge (LightParameters::far_field_cell_m; docs/light.md "Coarser far-field cells tried and
+// not kept"). The gap is grown with four seeds (the example's own and 2, 3, 4) and judged on their mean, since
+// one draw varies as much as the effect; --seed S replaces them and the dense plantation's own seed (3) by S
+// alone: one draw of each finding.
 //
 // Writes every run's full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
 // measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
@@ -82,16 +84,18 @@ std::pair<StandRecord, StandRecord> grow(const Scenario& scenario, const fs::pat
   return records;
 }
 
-// What a run of this validation is grown with besides its CI size: years, the light's cut-off and the seed.
+// What a run of this validation is grown with besides its CI size: years, the light's numerics and the seed.
 struct FindingRun {
   int years = 10;
   double cutoff_m = LightParameters{}.cutoff_m;
+  double far_field_cell_m = LightParameters{}.far_field_cell_m;
   std::optional<std::uint64_t> seed;  // unset: each scenario's own
 };
 
 void make_ci_sized(Scenario& scenario, FindingRun settings) {
   scenario.roots.enabled = false;
   scenario.light.cutoff_m = settings.cutoff_m;
+  scenario.light.far_field_cell_m = settings.far_field_cell_m;
   scenario.light.sky_bands = 8;
   scenario.light.sky_sectors = 16;
   const int end_age = scenario.stand.age_at_survey_years + settings.years;
@@ -269,6 +273,8 @@ int main(int argc, char** argv) {
   app.add_option("--years", settings.years, "years grown in each run")->check(CLI::Range(1, 200));
   app.add_option("--cutoff-m", settings.cutoff_m, "near-field cut-off of the light (m)")
       ->check(CLI::Range(0.5, 50.0));
+  app.add_option("--far-field-cell-m", settings.far_field_cell_m, "voxel edge of the light's far field (m)")
+      ->check(CLI::Range(0.1, 50.0));
   app.add_option("--seed", settings.seed,
                  "seed of every run (default: the gap with the example's own seed and 2, 3, 4; the dense stand with "
                  "its own)")
@@ -282,7 +288,8 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
-                       fmt::format("{:g} m, seed {}.\n\n", settings.cutoff_m,
+                       fmt::format("{:g} m, far-field cells {:g} m, seed {}.\n\n", settings.cutoff_m,
+                                   settings.far_field_cell_m,
                                    settings.seed ? std::to_string(*settings.seed)
                                                  : "the gap's own and 2, 3, 4, the dense stand's own");
   std::vector<Finding> findings;
