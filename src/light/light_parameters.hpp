@@ -37,7 +37,7 @@ struct LightParameters {
   bool far_field = true;           // false: nothing beyond the cut-off shades (to study the approximation)
   double far_field_table_mb = 512;  // memory cap of the far-field table; bigger stands get coarser cells
   // 1.5 and 2 m cells halve and quarter the far field's time at 10^5 balls but lose the gap check (+0.075 and
-  // +0.063 m against 0.10) and brighten an open-edged canopy (docs/light.md "Coarser far-field cells tried and not kept").
+  // +0.063 m against 0.10), whatever the hand-over (docs/light.md "Coarser far-field cells tried and not kept").
   double far_field_cell_m = 1.0;
   // The far field's dark bias corrected (docs/light.md "Far-field bias"): read it one cell beyond the cut-off
   // and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
