@@ -60,12 +60,14 @@ void add_bench_stand_command(CLI::App& bench) {
 struct LightOverrides {
   CLI::Option* cutoff = nullptr;
   CLI::Option* far_field_cell = nullptr;
+  CLI::Option* hand_over = nullptr;
   CLI::Option* periodic = nullptr;
   CLI::Option* bias_correction = nullptr;
 
   void apply(const LightParameters& given, LightParameters& stand) const {
     if (cutoff->count() > 0) stand.cutoff_m = given.cutoff_m;
     if (far_field_cell->count() > 0) stand.far_field_cell_m = given.far_field_cell_m;
+    if (hand_over->count() > 0) stand.far_field_hand_over_cells = given.far_field_hand_over_cells;
     if (periodic->count() > 0) stand.periodic = given.periodic;
     if (bias_correction->count() > 0) stand.far_field_bias_correction = given.far_field_bias_correction;
   }
@@ -99,6 +101,13 @@ void add_bench_light_command(CLI::App& bench) {
                                                 std::string("Far-field voxel edge, m") + overrides_stand)
                                   ->check(CLI::PositiveNumber)
                                   ->capture_default_str();
+  overrides->hand_over =
+      light->add_option("--far-field-hand-over", options->parameters.far_field_hand_over_cells,
+                        std::string("Cell edges beyond the cut-off where the far field takes over (with the bias "
+                                    "correction)") +
+                            overrides_stand)
+          ->check(CLI::Range(0.0, 4.0))
+          ->capture_default_str();
   overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
                                         std::string("Treat the plot as a torus") + overrides_stand);
   overrides->bias_correction =

@@ -62,12 +62,12 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, st
 // it and the lookup interpolates between cell centres, so a ball reaches the table up to two cells away. Read
 // right at the cut-off, the table still holds much of the near balls just inside it, which the ray test has
 // already counted; at a canopy's top and bottom, where a receiver's rays leave the foliage, nothing beyond
-// makes up for it, and the light comes out too dark. The bias correction starts one cell further out: that drops
-// most of the double count and misses about as much of the balls just beyond the cut-off (docs/light.md). Off,
-// the table starts at the cut-off.
+// makes up for it, and the light comes out too dark. The bias correction starts further out
+// (LightParameters::far_field_hand_over_cells, one cell by default): that drops most of the double count and
+// misses about as much of the balls just beyond the cut-off (docs/light.md). Off, the table starts at the cut-off.
 double far_field_start(const VoxelGrid& grid, const LightParameters& p) {
   if (!p.far_field_bias_correction) return p.cutoff_m;
-  return p.cutoff_m + std::max({grid.cell.x, grid.cell.y, grid.cell.z});
+  return p.cutoff_m + p.far_field_hand_over_cells * std::max({grid.cell.x, grid.cell.y, grid.cell.z});
 }
 
 }  // namespace

@@ -133,9 +133,10 @@ const char* sky_name(LightParameters::Sky sky) {
 std::string parameters_json(const LightParameters& p) {
   return fmt::format(R"({{"sky": "{}", "sky_scale": {}, "sky_bands": {}, "sky_sectors": {}, "transmittance": {}, )"
                      R"("intensity_ratio": {}, "cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, )"
-                     R"("periodic": {}}})",
+                     R"("far_field_hand_over_cells": {}, "periodic": {}}})",
                      sky_name(p.sky), p.sky_scale, p.sky_bands, p.sky_sectors, p.transmittance, p.intensity_ratio,
-                     p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.periodic ? "true" : "false");
+                     p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.far_field_hand_over_cells,
+                     p.periodic ? "true" : "false");
 }
 
 // The four solvers on one canopy -- the culled ones with `parameters`, the exact ones with the same but exact --

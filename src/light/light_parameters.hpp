@@ -29,9 +29,10 @@ struct LightParameters {
   // a voxel grid of leaf-ball density attenuates each patch direction (far field).
   // exact = true disables both (every ball vs every ball). 3 m since 2026-11-24: with the corrected far field the
   // light stays within 0.003 of exact and every stand check holds, at three quarters of the 4 m solve's cost
-  // (docs/light.md "The 3 m cut-off by default"). 2 m was tried on 2026-11-25 and not kept: 0.63 of the stand
-  // solve's time, but the light 0.0105 off exact (bright by 0.008) on a synthetic open-edged canopy and a
-  // suppressed understorey tree too bright to die (docs/light.md "2 m tried and not kept").
+  // (docs/light.md "The 3 m cut-off by default"). 2 m (2026-11-25 and 2026-11-26) and 2.5 m (2026-11-26) were tried
+  // with several hand-overs (below) and not kept: at every one some check fails, the open-edged canopy's bright
+  // bias, the suppressed understorey tree, the gap or the crowded block's survival (docs/light.md "2 m tried and not
+  // kept", "2.5 m and nearer hand-overs tried and not kept").
   bool exact = false;
   double cutoff_m = 3.0;
   bool far_field = true;           // false: nothing beyond the cut-off shades (to study the approximation)
@@ -43,6 +44,11 @@ struct LightParameters {
   // and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
   // light (docs/light.md "The corrected far field by default"); false gives the old, darker far field.
   bool far_field_bias_correction = true;
+  // With the correction, where the far field takes over: this many cell edges beyond the cut-off. One cell drops
+  // most of the near balls' smoothed density that spills past the cut-off, and misses about as much of the balls
+  // just beyond it; nearer brightens less and darkens grown canopies more (docs/light.md "2.5 m and nearer
+  // hand-overs tried and not kept", which measured 0.5-1 cell at 2 and 2.5 m cut-offs).
+  double far_field_hand_over_cells = 1.0;
 
   // Periodic stand edges: treat the plot as a torus for light (edge trees not unnaturally sunlit).
   bool periodic = false;

@@ -13,7 +13,7 @@ namespace {
 using L = LightParameters;
 
 // Every LightParameters field, with its allowed range.
-const std::array<ParameterField<L>, 16> light_fields{{
+const std::array<ParameterField<L>, 17> light_fields{{
     {"sky_bands", &L::sky_bands, from_up_to(2.0, limit::sky_bands)},
     {"sky_sectors", &L::sky_sectors, from_up_to(4.0, limit::sky_sectors)},
     {"intensity_ratio", &L::intensity_ratio, positive_up_to(limit::intensity_ratio)},
@@ -24,6 +24,7 @@ const std::array<ParameterField<L>, 16> light_fields{{
     {"cutoff_m", &L::cutoff_m, positive_up_to(limit::light_distance_m)},
     {"far_field_cell_m", &L::far_field_cell_m, positive_up_to(limit::light_distance_m)},
     {"far_field_bias_correction", &L::far_field_bias_correction},
+    {"far_field_hand_over_cells", &L::far_field_hand_over_cells, between(0.0, 4.0)},
     {"far_field_table_mb", &L::far_field_table_mb, from_up_to(1.0, limit::far_field_table_mb)},
     {"periodic", &L::periodic},
     {"plot_x_min", &L::plot_x_min, magnitude_up_to(limit::coordinate_m)},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 namespace heliostand {
@@ -98,16 +99,37 @@ TEST_P(FarFieldBiasCorrection, OpticalDepthIsDensityTimesSlantPathToTheTop) {
   EXPECT_EQ(far.optical_depth({4.5, 4.5, 50.0}, 0), 0.0);
 }
 
-// Off, receivers read the table right at the cut-off (the light the growth is calibrated on); corrected, one
-// cell beyond it, the cell being the grid's (here coarsened to 2 m).
+// Off, receivers read the table right at the cut-off (the light the growth is calibrated on); corrected,
+// far_field_hand_over_cells (by default one) cells beyond it, the cell being the grid's (here coarsened to 2 m).
 TEST_P(FarFieldBiasCorrection, ReceiversReadTheTableAtTheCutoffOrOneCellBeyond) {
   Slab slab(GetParam());
   slab.p.far_field_cell_m = 2.0;
   slab.p.cutoff_m = 4.0;
   const CelestialSphere sky(slab.p);
-  const FarField far(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky);
-  if (GetParam()) EXPECT_EQ(far.start_distance(), 6.0);
-  else EXPECT_EQ(far.start_distance(), 4.0);
+  const auto start = [&](double hand_over_cells) {
+    slab.p.far_field_hand_over_cells = hand_over_cells;
+    return FarField(make_occluder_set(slab.balls, PlotTorus::from(slab.p), 0), slab.p, sky).start_distance();
+  };
+  EXPECT_EQ(LightParameters{}.far_field_hand_over_cells, 1.0);
+  EXPECT_EQ(start(1.0), GetParam() ? 6.0 : 4.0);
+  EXPECT_EQ(start(0.75), GetParam() ? 5.5 : 4.0);  // uncorrected, the hand-over is the cut-off whatever it says
+}
+
+// A hand-over outside 0..4 cells is refused by name before any solve (light_parameters.cpp validate).
+TEST(FarField, HandOverOutsideZeroToFourCellsIsRefused) {
+  for (const double cells : {-0.1, 4.5}) {
+    LightParameters p;
+    p.far_field_hand_over_cells = cells;
+    try {
+      validate(p);
+      ADD_FAILURE() << cells << " cells accepted";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("light.far_field_hand_over_cells"), std::string::npos) << error.what();
+    }
+  }
+  LightParameters p;
+  p.far_field_hand_over_cells = 0.0;
+  EXPECT_NO_THROW(validate(p));
 }
 
 // The table is indexed by the receiver (far_field.hpp): read at a receiver it must give what a direct march from

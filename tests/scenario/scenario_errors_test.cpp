@@ -48,7 +48,8 @@ TEST(ScenarioErrors, UnknownKeysAndTables) {
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: detail, device, "
                           "output_interval, roots_output_interval, seed, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
-                          "far_field_bias_correction, far_field_cell_m, far_field_table_mb, ground_albedo, intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
+                          "far_field_bias_correction, far_field_cell_m, far_field_hand_over_cells, far_field_table_mb, ground_albedo, "
+                          "intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
                           "sky, sky_bands, sky_scale, sky_sectors, transmittance)"));
 }
 

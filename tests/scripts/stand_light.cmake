@@ -20,6 +20,10 @@ add_test(NAME validation.stand_light.refuses_bad_far_field_cell
          COMMAND stand_light_validation ${PROJECT_BINARY_DIR}/validation/stand_light_refused --far-field-cell-m 0)
 set_tests_properties(validation.stand_light.refuses_bad_far_field_cell PROPERTIES
   LABELS "validation" PASS_REGULAR_EXPRESSION "--far-field-cell-m: Value 0 not in range")
+add_test(NAME validation.stand_light.refuses_bad_hand_over
+         COMMAND stand_light_validation ${PROJECT_BINARY_DIR}/validation/stand_light_refused --hand-over-cells 5)
+set_tests_properties(validation.stand_light.refuses_bad_hand_over PROPERTIES
+  LABELS "validation" PASS_REGULAR_EXPRESSION "--hand-over-cells: Value 5 not in range")
 
 foreach(run self_thinning)
   add_test(NAME validation.stand_light.render_${run}

@@ -7,12 +7,14 @@
 //   2. Self-thinning: a dense unthinned young plantation (generated here: 64 trees at 1.5 m spacing, 4 444
 //      stems/ha, heights spread ±30 %) loses its suppressed trees to light, the shorter ones.
 //
-//   stand_light_validation OUT_DIR [--years N] [--cutoff-m M] [--far-field-cell-m C] [--seed S]
+//   stand_light_validation OUT_DIR [--years N] [--cutoff-m M] [--far-field-cell-m C] [--hand-over-cells H]
+//                          [--seed S]
 //
 // --cutoff-m sets the light's near-field cut-off (LightParameters::cutoff_m; default the model's) in all runs:
 // the findings measured at another cut-off (docs/light.md "2 m tried and not kept"); --far-field-cell-m likewise
 // the far field's voxel edge (LightParameters::far_field_cell_m; docs/light.md "Coarser far-field cells tried and
-// not kept"). The gap is grown with four seeds (the example's own and 2, 3, 4) and judged on their mean, since
+// not kept"), and --hand-over-cells where the far field takes over (LightParameters::far_field_hand_over_cells;
+// docs/light.md "The 2.5 m cut-off by default"). The gap is grown with four seeds (the example's own and 2, 3, 4) and judged on their mean, since
 // one draw varies as much as the effect; --seed S replaces them and the dense plantation's own seed (3) by S
 // alone: one draw of each finding.
 //
@@ -89,6 +91,7 @@ struct FindingRun {
   int years = 10;
   double cutoff_m = LightParameters{}.cutoff_m;
   double far_field_cell_m = LightParameters{}.far_field_cell_m;
+  double hand_over_cells = LightParameters{}.far_field_hand_over_cells;
   std::optional<std::uint64_t> seed;  // unset: each scenario's own
 };
 
@@ -96,6 +99,7 @@ void make_ci_sized(Scenario& scenario, FindingRun settings) {
   scenario.roots.enabled = false;
   scenario.light.cutoff_m = settings.cutoff_m;
   scenario.light.far_field_cell_m = settings.far_field_cell_m;
+  scenario.light.far_field_hand_over_cells = settings.hand_over_cells;
   scenario.light.sky_bands = 8;
   scenario.light.sky_sectors = 16;
   const int end_age = scenario.stand.age_at_survey_years + settings.years;
@@ -275,6 +279,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.5, 50.0));
   app.add_option("--far-field-cell-m", settings.far_field_cell_m, "voxel edge of the light's far field (m)")
       ->check(CLI::Range(0.1, 50.0));
+  app.add_option("--hand-over-cells", settings.hand_over_cells,
+                 "cell edges beyond the cut-off where the light's far field takes over")
+      ->check(CLI::Range(0.0, 4.0));
   app.add_option("--seed", settings.seed,
                  "seed of every run (default: the gap with the example's own seed and 2, 3, 4; the dense stand with "
                  "its own)")
@@ -288,8 +295,8 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
-                       fmt::format("{:g} m, far-field cells {:g} m, seed {}.\n\n", settings.cutoff_m,
-                                   settings.far_field_cell_m,
+                       fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edges beyond it, seed {}.\n\n",
+                                   settings.cutoff_m, settings.far_field_cell_m, settings.hand_over_cells,
                                    settings.seed ? std::to_string(*settings.seed)
                                                  : "the gap's own and 2, 3, 4, the dense stand's own");
   std::vector<Finding> findings;
