@@ -14,9 +14,9 @@
 // the findings measured at another cut-off (docs/light.md "2 m tried and not kept"); --far-field-cell-m likewise
 // the far field's voxel edge (LightParameters::far_field_cell_m; docs/light.md "Coarser far-field cells tried and
 // not kept"), and --hand-over-cells where the far field takes over (LightParameters::far_field_hand_over_cells;
-// docs/light.md "The 2.5 m cut-off by default"). The gap is grown with four seeds (the example's own and 2, 3, 4) and judged on their mean, since
-// one draw varies as much as the effect; --seed S replaces them and the dense plantation's own seed (3) by S
-// alone: one draw of each finding.
+// docs/light.md "2.5 m and nearer hand-overs tried and not kept"). The gap is grown with four seeds (the
+// example's own and 2, 3, 4) and judged on their mean, since one draw varies as much as the effect; --seed S
+// replaces them and the dense plantation's own seed (3) by S alone: one draw of each finding.
 //
 // Writes every run's full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
 // measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
