@@ -106,7 +106,7 @@ void add_bench_light_command(CLI::App& bench) {
                         std::string("Cell edges beyond the cut-off where the far field takes over (with the bias "
                                     "correction)") +
                             overrides_stand)
-          ->check(CLI::Range(0.0, 4.0))
+          ->check(CLI::Range(0.0, double(max_far_field_hand_over_cells)))
           ->capture_default_str();
   overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
                                         std::string("Treat the plot as a torus") + overrides_stand);

@@ -24,8 +24,9 @@ void validate(const LightParameters& p) {
   require(p.ground_albedo >= 0 && p.ground_albedo <= 1, "ground_albedo", "expected a number in 0..1");
   require(p.cutoff_m > 0, "cutoff_m", "expected a distance > 0 m");
   require(p.far_field_cell_m > 0, "far_field_cell_m", "expected a distance > 0 m");
-  require(p.far_field_hand_over_cells >= 0 && p.far_field_hand_over_cells <= 4, "far_field_hand_over_cells",
-          "expected a number of cell edges in 0..4");
+  require(p.far_field_hand_over_cells >= 0 && p.far_field_hand_over_cells <= max_far_field_hand_over_cells,
+          "far_field_hand_over_cells",
+          "expected a number of cell edges in 0.." + std::to_string(max_far_field_hand_over_cells));
   require(p.far_field_table_mb >= 1, "far_field_table_mb", "expected at least 1 MB");
   if (p.periodic) {
     require(p.plot_x_max > p.plot_x_min, "plot_x_max", "periodic edges need plot_x_max > plot_x_min");

@@ -9,6 +9,9 @@ namespace heliostand {
 // private (per work item) memory, log_b[bands x sectors], 32 KiB of floats at 64 x 128.
 constexpr int max_sky_bands = 64;
 constexpr int max_sky_sectors = 128;
+// The farthest hand-over validate() allows, in cell edges beyond the cut-off (far_field_hand_over_cells): enough to
+// study it; further out the far field would skip crowns the near field never tested.
+constexpr int max_far_field_hand_over_cells = 4;
 
 struct LightParameters {
   // The celestial sphere around each leaf ball: V latitude bands x H longitude sectors.
@@ -40,8 +43,8 @@ struct LightParameters {
   // 1.5 and 2 m cells halve and quarter the far field's time at 10^5 balls but lose the gap check (+0.075 and
   // +0.063 m against 0.10), whatever the hand-over (docs/light.md "Coarser far-field cells tried and not kept").
   double far_field_cell_m = 1.0;
-  // The far field's dark bias corrected (docs/light.md "Far-field bias"): read it one cell beyond the cut-off
-  // and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
+  // The far field's dark bias corrected (docs/light.md "Far-field bias"): read it `far_field_hand_over_cells`
+  // beyond the cut-off and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
   // light (docs/light.md "The corrected far field by default"); false gives the old, darker far field.
   bool far_field_bias_correction = true;
   // With the correction, where the far field takes over: this many cell edges beyond the cut-off. One cell drops

@@ -24,7 +24,7 @@ const std::array<ParameterField<L>, 17> light_fields{{
     {"cutoff_m", &L::cutoff_m, positive_up_to(limit::light_distance_m)},
     {"far_field_cell_m", &L::far_field_cell_m, positive_up_to(limit::light_distance_m)},
     {"far_field_bias_correction", &L::far_field_bias_correction},
-    {"far_field_hand_over_cells", &L::far_field_hand_over_cells, between(0.0, 4.0)},
+    {"far_field_hand_over_cells", &L::far_field_hand_over_cells, between(0.0, max_far_field_hand_over_cells)},
     {"far_field_table_mb", &L::far_field_table_mb, from_up_to(1.0, limit::far_field_table_mb)},
     {"periodic", &L::periodic},
     {"plot_x_min", &L::plot_x_min, magnitude_up_to(limit::coordinate_m)},

@@ -117,7 +117,7 @@ TEST_P(FarFieldBiasCorrection, ReceiversReadTheTableAtTheCutoffOrOneCellBeyond) 
 
 // A hand-over outside 0..4 cells is refused by name before any solve (light_parameters.cpp validate).
 TEST(FarField, HandOverOutsideZeroToFourCellsIsRefused) {
-  for (const double cells : {-0.1, 4.5}) {
+  for (const double cells : {-0.1, max_far_field_hand_over_cells + 0.5}) {
     LightParameters p;
     p.far_field_hand_over_cells = cells;
     try {

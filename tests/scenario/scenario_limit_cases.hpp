@@ -132,7 +132,7 @@ inline void add_stand_run_light(std::vector<LimitCase>& cases) {
       {"cutoff_m", light_distance_m.max},       {"far_field_cell_m", light_distance_m.max},
       {"plot_x_min", coordinate_m.max},         {"plot_y_min", coordinate_m.max},
       {"plot_x_max", coordinate_m.max},         {"plot_y_max", coordinate_m.max},
-      {"far_field_table_mb", far_field_table_mb.max}, {"far_field_hand_over_cells", 4}};
+      {"far_field_table_mb", far_field_table_mb.max}, {"far_field_hand_over_cells", max_far_field_hand_over_cells}};
   for (const auto& [key, max] : numbers)
     cases.push_back({std::string("light.") + key, light + key + " = @\n", max});
   cases.push_back({"competition.hegyi_radius_m", "[competition]\nhegyi_radius_m = @\n", neighbourhood_m.max});

@@ -281,7 +281,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 50.0));
   app.add_option("--hand-over-cells", settings.hand_over_cells,
                  "cell edges beyond the cut-off where the light's far field takes over")
-      ->check(CLI::Range(0.0, 4.0));
+      ->check(CLI::Range(0.0, double(max_far_field_hand_over_cells)));
   app.add_option("--seed", settings.seed,
                  "seed of every run (default: the gap with the example's own seed and 2, 3, 4; the dense stand with "
                  "its own)")
@@ -295,7 +295,7 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
-                       fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edges beyond it, seed {}.\n\n",
+                       fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edge(s) beyond it, seed {}.\n\n",
                                    settings.cutoff_m, settings.far_field_cell_m, settings.hand_over_cells,
                                    settings.seed ? std::to_string(*settings.seed)
                                                  : "the gap's own and 2, 3, 4, the dense stand's own");
