@@ -1,5 +1,6 @@
 #include "light/opencl_light_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -42,11 +43,23 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
 // (cl/far_field.cl, far_field_by_cell). The kernels get it as the build option FAR_ROW.
 std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8; }
 
+// The most the table laid out by cell may take: far_field_table_mb (4 bytes a cell and patch: VoxelGrid coarsens
+// the cells to keep within it) with the rows' padding.
+std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count) {
+  return std::size_t(p.far_field_table_mb * 1e6 / patch_count) * far_row(patch_count);
+}
+
+// A device buffer kept from one solve to the next, and its size.
+struct KeptBuffer {
+  cl::Buffer buffer;
+  std::size_t bytes = 0;
+};
+
 // The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
 // out by cell; it stays there for the culled kernel.
 cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
                            std::size_t patch_count, const cl::Buffer& patches, const cl_float4& cell,
-                           const cl_int4& dims, bool periodic) {
+                           const cl_int4& dims, bool periodic, KeptBuffer& table_kept, std::size_t table_cap_bytes) {
   const auto& context = device.context;
   const std::vector<float> density(far.density().begin(), far.density().end());
   const cl::Buffer density_buffer = read_only(context, density);
@@ -71,7 +84,17 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
     compute::launch(device, k, column_items, patch_count);
   }
   const std::size_t row = far_row(patch_count);
-  cl::Buffer table(context, CL_MEM_READ_WRITE, cells * row * sizeof(float));
+  // The table's buffer is kept for the next solve and replaced only when the table outgrows it (every entry is
+  // written again below). On a CPU device the layout into a fresh buffer took three to four times as long as into
+  // a used one: every page touched for the first time (docs/performance.md "The far-field table kept from one
+  // solve to the next"). An eighth to spare spares a growing canopy a new buffer every year, within the cap.
+  const std::size_t table_bytes = cells * row * sizeof(float);
+  if (table_bytes > table_kept.bytes) {
+    table_kept.buffer = cl::Buffer();  // let the old one go before the new one is made
+    table_kept.bytes = std::max(table_bytes, std::min(table_bytes + table_bytes / 8, table_cap_bytes));
+    table_kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, table_kept.bytes);
+  }
+  const cl::Buffer& table = table_kept.buffer;
   by_cell.setArg(0, depth);
   by_cell.setArg(1, table);
   by_cell.setArg(2, cl_int(cells));
@@ -163,6 +186,7 @@ struct OpenCLLightSolver::Device {
   cl::Kernel far_field_by_cell;
   cl::Kernel each_alone;
   cl::Kernel culled_and_alone;
+  KeptBuffer far_field_table;  // sweep_far_field's, laid out by cell
 };
 
 // What the fused pass (light_culled_and_alone) adds to a culled solve: each receiver's group lit alone as `solver`
@@ -358,7 +382,8 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
   const cl::Buffer depth_buffer =
       far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
-                            sky.patches().size(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic)
+                            sky.patches().size(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic,
+                            device_->far_field_table, far_table_cap_bytes(parameters_, sky.patches().size()))
           : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
   statistics_.far_field_seconds = seconds_since(part_start);
   statistics_.setup_seconds = seconds_since(setup_start);

@@ -1,0 +1,50 @@
+// The OpenCL solver keeps its far-field table's buffer on the device from one solve to the next (a run solves
+// every year; a fresh table's pages cost a CPU device as much as laying it out): what it lights must not depend on
+// what it lit before.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "compute/opencl_test_backend.hpp"
+#include "light/celestial_sphere.hpp"
+#include "light/opencl_light_solver.hpp"
+#include "light_test_stands.hpp"
+
+namespace heliostand {
+namespace {
+
+LightParameters culled_with_far_field() {
+  LightParameters p;
+  p.exact = false;
+  p.far_field = true;
+  p.cutoff_m = 1.5;  // most of each stand beyond the cut-off: the far field decides much of the light
+  p.far_field_cell_m = 0.5;
+  return p;
+}
+
+void expect_same_light(const std::vector<LightSample>& reused, const std::vector<LightSample>& fresh) {
+  ASSERT_EQ(reused.size(), fresh.size());
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    EXPECT_EQ(reused[i].light, fresh[i].light) << "ball " << i;
+    EXPECT_EQ(reused[i].vector, fresh[i].vector) << "ball " << i;
+  }
+}
+
+TEST(OpenCLFarFieldTable, ASolverLightsEachStandAsAFreshSolverWould) {
+  const auto backend = compute::opencl_backend_for_test();
+  if (!backend) GTEST_SKIP() << "no OpenCL device";
+  const LightParameters p = culled_with_far_field();
+  const CelestialSphere sky(p);
+  // A stand, a smaller one (its table fits in the first's buffer) and a larger one (it does not): different grids.
+  const std::vector<std::vector<LeafBall>> stands{testing::random_stand(400, 6.0, 0.1, 0.3, 11, sky, false),
+                                                  testing::random_stand(150, 3.0, 0.1, 0.3, 12, sky, false),
+                                                  testing::random_stand(900, 9.0, 0.1, 0.3, 13, sky, false)};
+  OpenCLLightSolver reused(p, *backend->opencl());
+  for (const auto& balls : stands) {
+    OpenCLLightSolver fresh(p, *backend->opencl());
+    expect_same_light(reused.solve(balls), fresh.solve(balls));
+  }
+}
+
+}  // namespace
+}  // namespace heliostand
