@@ -1,6 +1,6 @@
 // The OpenCL solver keeps its far-field table's buffer on the device from one solve to the next (a run solves
-// every year; a fresh table's pages cost a CPU device as much as laying it out): what it lights must not depend on
-// what it lit before.
+// every year; on a CPU device the layout into a fresh buffer took 3-4 times as long as into a used one): what it
+// lights must not depend on what it lit before.
 #include <gtest/gtest.h>
 
 #include <vector>
