@@ -43,7 +43,7 @@ VoxelGrid grid_around(const OccluderSet& occluders, const LightParameters& p, st
   }
   const glm::dvec3 extent = high - low;
   // The table holds 4 bytes per cell and patch; a stand too big for the budget gets coarser cells.
-  const double budget_cells = p.far_field_table_mb * 1e6 / (4.0 * patch_count);
+  const double budget_cells = far_field_table_budget_cells(p, patch_count);
   double cell_m = p.far_field_cell_m;
   const double volume = (extent.x + cell_m) * (extent.y + cell_m) * (extent.z + cell_m);
   // Said once per run by whoever runs the solves (LightSolveStatistics::far_field_cell_m), not once per solve.

@@ -23,6 +23,7 @@
 #include <glm/vec3.hpp>
 
 #include "light/celestial_sphere.hpp"
+#include "light/light_parameters.hpp"
 #include "light/occluders.hpp"
 
 namespace heliostand {
@@ -82,6 +83,12 @@ class FarField {
   std::vector<double> density_;
   std::vector<float> depth_;
 };
+
+// The most cells the optical-depth table may have: far_field_table_mb at 4 bytes a cell and patch. A stand that
+// would need more gets coarser cells (FarField's grid); the OpenCL solver keeps its table's buffer within it.
+inline double far_field_table_budget_cells(const LightParameters& p, std::size_t patch_count) {
+  return p.far_field_table_mb * 1e6 / (4.0 * patch_count);
+}
 
 inline int wrap_cell(int i, int n) {
   i %= n;

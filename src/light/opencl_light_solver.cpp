@@ -43,10 +43,9 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
 // (cl/far_field.cl, far_field_by_cell). The kernels get it as the build option FAR_ROW.
 std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8; }
 
-// The most the table laid out by cell may take: far_field_table_mb (4 bytes a cell and patch: VoxelGrid coarsens
-// the cells to keep within it) with the rows' padding.
+// The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding.
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count) {
-  return std::size_t(p.far_field_table_mb * 1e6 / patch_count) * far_row(patch_count);
+  return std::size_t(far_field_table_budget_cells(p, patch_count) * far_row(patch_count) * sizeof(float));
 }
 
 // A device buffer kept from one solve to the next, and its size.
