@@ -44,8 +44,9 @@ struct LightParameters {
   // +0.063 m against 0.10), whatever the hand-over (docs/light.md "Coarser far-field cells tried and not kept").
   double far_field_cell_m = 1.0;
   // The far field's dark bias corrected (docs/light.md "Far-field bias"): read it `far_field_hand_over_cells`
-  // beyond the cut-off and scale each cell's density by its foliage clumping index. On by default: the growth rules are set on this
-  // light (docs/light.md "The corrected far field by default"); false gives the old, darker far field.
+  // beyond the cut-off and scale each cell's density by its foliage clumping index. On by default: the growth
+  // rules are set on this light (docs/light.md "The corrected far field by default"); false gives the old, darker
+  // far field.
   bool far_field_bias_correction = true;
   // With the correction, where the far field takes over: this many cell edges beyond the cut-off. One cell drops
   // most of the near balls' smoothed density that spills past the cut-off, and misses about as much of the balls
