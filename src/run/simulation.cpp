@@ -104,6 +104,13 @@ class FarFieldCells {
   double coarsest_ = 0;
 };
 
+// The stand solves' parts, summed year by year: which part of the light a change must shorten (`bench stand`).
+void add_light_parts(const LightSolveStatistics& last_solve, SimulationSummary& summary) {
+  summary.light_search_seconds += last_solve.search_seconds;
+  summary.light_far_field_seconds += last_solve.far_field_seconds;
+  summary.light_shading_seconds += last_solve.evaluate_seconds;
+}
+
 }  // namespace
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
@@ -161,10 +168,12 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
 
   ProgressLine progress(scenario.run.years, options.show_progress);
   FarFieldCells far_field_cells(stand_light);
+  SimulationSummary summary;
   for (int year = first_year; year <= scenario.run.years; ++year) {
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
     far_field_cells.after_year(solver->last_statistics(), stand.stand_age());
+    add_light_parts(solver->last_statistics(), summary);
     if (options.observe_year) options.observe_year(stand, year);
     if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years)) {
       run_progress.wall_seconds = wall_seconds();
@@ -174,7 +183,6 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   }
   progress.finish();
 
-  SimulationSummary summary;
   summary.first_stand_age = scenario.stand.age_at_survey_years;
   summary.last_stand_age = stand.stand_age();
   count_trees(stand, roots ? &*roots : nullptr, summary);

@@ -43,6 +43,10 @@ struct SimulationSummary {
   std::size_t root_segments = 0;  // of their root systems
   double light_tile_candidates_per_ball = 0;  // near-field candidates each ball scanned in the last light solve
   double light_far_field_cell_m_max = 0;  // coarsest far-field cell of the run's stand solves (m; 0: no far field)
+  // Where the stand solves' time went, summed over the run's years (LightSolveStatistics; a resumed run counts its
+  // own years only): the near-field search (k-d tree, tile lists), the far field (density and optical-depth table)
+  // and the shading (the kernel, with the trees alone where the solver lights them in the same pass).
+  double light_search_seconds = 0, light_far_field_seconds = 0, light_shading_seconds = 0;
 };
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options);

@@ -70,6 +70,9 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["root_segments_at_end"] = run.root_segments;
   json["light_tile_candidates_per_ball"] = run.light_tile_candidates_per_ball;
   json["light_far_field_cell_m_max"] = run.light_far_field_cell_m_max;
+  json["light_parts_seconds"] = {{"search", run.light_search_seconds},
+                                 {"far_field", run.light_far_field_seconds},
+                                 {"shading", run.light_shading_seconds}};
   json["heap_in_use_at_end_bytes"] = heap_at_end;
   json["peak_memory_bytes"] = peak;
   json["peak_memory_mib"] = static_cast<double>(peak) / (1024.0 * 1024.0);

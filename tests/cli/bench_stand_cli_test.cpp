@@ -81,6 +81,15 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_GE(json.at("shoots_at_end").get<long>(), json.at("leaf_balls_at_end").get<long>());
   EXPECT_GT(json.at("root_segments_at_end").get<long>(), 8);
   EXPECT_GT(json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
+  // The stand solves' parts: each present and spent (the tiny stand is culled, with a far field), together within
+  // the light stage that times them.
+  double parts = 0;
+  for (const char* part : {"search", "far_field", "shading"}) {
+    ASSERT_TRUE(json.at("light_parts_seconds").contains(part)) << part;
+    EXPECT_GT(json.at("light_parts_seconds").at(part).get<double>(), 0.0) << part;
+    parts += json.at("light_parts_seconds").at(part).get<double>();
+  }
+  EXPECT_LE(parts, json.at("stage_seconds").at("light").get<double>());
   const double peak = json.at("peak_memory_bytes");
   EXPECT_GT(peak, 1 << 20);
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
@@ -93,6 +102,9 @@ TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
   const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   EXPECT_GT(bench.json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
+  // the one pass (stand and trees alone) reports its parts too
+  for (const char* part : {"search", "far_field", "shading"})
+    EXPECT_GT(bench.json.at("light_parts_seconds").at(part).get<double>(), 0.0) << part;
 }
 
 // A stand whose far-field table outgrows far_field_table_mb gets coarser cells in every solve, a little coarser as it
