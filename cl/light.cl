@@ -30,18 +30,22 @@
 #endif
 
 // The ray test of the reference solver (half-line from the receiver along n hits the ball at offset d: in front,
-// and |d x n|^2 <= r^2), for the patches first .. last of one band, eight at a time: log(t) is added to each patch
-// hit and 0 to the others (a lane past `last` adds 0 to whatever it reads), so every patch sums the same terms in
-// the same order as a patch-by-patch loop would. Without contraction into fused multiply-adds the eight lanes
+// and |d x n|^2 <= r^2) for the eight patches p .. p + 7. Without contraction into fused multiply-adds the eight lanes
 // decide each hit exactly as the scalar test they replace did (same tables, docs/performance.md).
-inline int8 patch_run_hits(__global const float* axes, int p, int last, float3 d, float r2) {
+__attribute__((always_inline)) inline int8 run_hits(__global const float* axes, int p, float3 d, float r2) {
 #pragma OPENCL FP_CONTRACT OFF
-  const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
   const float8 nx = vload8(0, axes + p), ny = vload8(0, axes + AXIS_STRIDE + p);
   const float8 nz = vload8(0, axes + 2 * AXIS_STRIDE + p);
   const float8 along = nx * d.x + ny * d.y + nz * d.z;
   const float8 cx = d.y * nz - d.z * ny, cy = d.z * nx - d.x * nz, cz = d.x * ny - d.y * nx;
-  return along > 0.0f && cx * cx + cy * cy + cz * cz <= r2 && p + lane <= last;
+  return along > 0.0f && cx * cx + cy * cy + cz * cz <= r2;
+}
+
+// The same for the patches first .. last of one band, eight at a time: log(t) is added to each patch hit and 0 to
+// the others (a lane past `last` adds 0 to whatever it reads), so every patch sums the same terms in the same order
+// as a patch-by-patch loop would.
+inline int8 patch_run_hits(__global const float* axes, int p, int last, float3 d, float r2) {
+  return run_hits(axes, p, d, r2) && p + (int8)(0, 1, 2, 3, 4, 5, 6, 7) <= last;
 }
 
 inline void shade_patch_run(float* log_b, __global const float* axes, int first, int last, float3 d, float r2,
@@ -79,6 +83,35 @@ inline void shade_band_twice(float* log_b, float* other_log_b, __global const fl
   shade_patch_run_twice(log_b, other_log_b, axes, row + max(h_lo, 0), row + min(h_hi, SKY_SECTORS - 1), d, r2, log_t);
   shade_patch_run_twice(log_b, other_log_b, axes, row + max(h_lo, SKY_SECTORS) - SKY_SECTORS, row + h_hi - SKY_SECTORS,
                         d, r2, log_t);
+}
+
+// A ball whose window spans at most eight sectors (most of a grown canopy's near field): one run of eight patches a
+// band, or two where the window wraps past sector 0 (sectors 0..7 and the last eight, apart while SKY_SECTORS >= 16).
+// No lane needs a mask: each run lies inside its band's row, and a patch of it outside the ball's window is one
+// the exact test does not hit (the window holds every patch the ball can hit), so it adds 0 as a masked lane would.
+// Shades `other_log_b` too when it is not null. Returns 0, shading nothing, for a wider window. Inlined by force:
+// a call per band (shade_band) cost more than its run (docs/performance.md "Narrow windows in one run a band, and
+// the tile lists read in order").
+__attribute__((always_inline)) inline int shade_narrow(float* log_b, float* other_log_b, __global const float* axes,
+                                                       int v_lo, int v_hi, int h_lo, int h_hi, float3 d, float r2,
+                                                       float log_t) {
+#if SKY_SECTORS >= 16
+  if (h_hi - h_lo >= 8) return 0;
+  const int wraps = h_lo < 0 || h_hi >= SKY_SECTORS;
+  const int first = wraps ? 0 : min(h_lo, SKY_SECTORS - 8);
+  const int last = wraps ? SKY_SECTORS - 8 : first;
+  for (int v = v_lo; v <= v_hi; ++v) {
+    const int row = v * SKY_SECTORS;
+    for (int p = row + first; p <= row + last; p += SKY_SECTORS - 8) {
+      const float8 added = select((float8)(0.0f), (float8)(log_t), run_hits(axes, p, d, r2));
+      vstore8(vload8(0, log_b + p) + added, 0, log_b + p);
+      if (other_log_b) vstore8(vload8(0, other_log_b + p) + added, 0, other_log_b + p);
+    }
+  }
+  return 1;
+#else
+  return 0;
+#endif
 }
 
 // Inverse trigonometry for the patch window only. Polynomials of Abramowitz & Stegun (1964), 4.4.45 (acos,
@@ -167,6 +200,8 @@ inline void shade_by_batch(float* log_b, __global const float* axes, const Occlu
     }
     const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
     const float r2 = batch->r[l] * batch->r[l];
+    if (shade_narrow(log_b, 0, axes, window.v_lo[l], window.v_hi[l], window.h_lo[l], window.h_hi[l], d, r2, log_t))
+      continue;
     for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
       shade_band(log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
   }
@@ -185,6 +220,9 @@ inline void shade_by_batch_twice(float* log_b, float* other_log_b, __global cons
     }
     const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
     const float r2 = batch->r[l] * batch->r[l];
+    if (shade_narrow(log_b, other_log_b, axes, window.v_lo[l], window.v_hi[l], window.h_lo[l], window.h_hi[l], d, r2,
+                     log_t))
+      continue;
     for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
       shade_band_twice(log_b, other_log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
   }
@@ -196,13 +234,14 @@ inline void batch_finish(OccluderBatch* batch, float* log_b, __global const floa
   batch->count = 0;
 }
 
-// The first `count` balls of `held_index` into the batch, as offsets from the receiver at `centre`.
-inline void batch_fill(OccluderBatch* batch, __global const float4* balls, const int* held_index, int count,
-                       float3 centre) {
+// The first `count` entries of the tile lists at places `held` (laid out by axis, `entry_stride` apart) into the
+// batch, as offsets from the receiver at `centre`.
+inline void batch_fill(OccluderBatch* batch, __global const float* entries, int entry_stride, const int* held,
+                       int count, float3 centre) {
   for (int l = 0; l < count; ++l) {
-    const float4 ball = balls[held_index[l]];
-    const float3 d = ball.xyz - centre;
-    batch->x[l] = d.x, batch->y[l] = d.y, batch->z[l] = d.z, batch->r[l] = ball.w;
+    const int e = held[l];
+    batch->x[l] = entries[e] - centre.x, batch->y[l] = entries[entry_stride + e] - centre.y;
+    batch->z[l] = entries[2 * entry_stride + e] - centre.z, batch->r[l] = entries[3 * entry_stride + e];
   }
   batch->count = count;
 }
@@ -329,33 +368,58 @@ inline void far_field_attenuate(float* log_b, __global const float* by_cell, flo
   }
 }
 
-// The near field from the receiver's tile list: the candidates candidates[scan.x .. scan.y) within the cut-off
-// (squared: cutoff2) of the receiver at `centre` shade log_b, eight at a time, except the receiver itself and, when
-// own_group >= 0, every entry of that group (entry_group, read only then).
-// Without a branch on the distance: every candidate's index is written into the next free place, and only one
-// within the cut-off (about one in three of the candidates scanned on a grown canopy) claims it; a rejected one
-// is overwritten by the next. Once eight are held, their offsets are read again (from cache) into the batch.
-// Every hit adds the same log t, so neither this order nor the shells' changes a patch's sum. An unpredictable
-// branch per candidate cost more than the store; storing the index instead of the offset and radius measured
-// the same, and eight candidates' distances in SIMD lanes slower (docs/performance.md).
-inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __global const float4* balls,
-                                     __global const int* candidates, int2 scan, float3 centre, float cutoff2, int self,
-                                     __global const int* entry_group, int own_group, __global const float* axes,
-                                     float log_t) {
-  int held_index[8];
-  int held = 0;
-  for (int k = scan.x; k < scan.y; ++k) {
-    const int j = candidates[k];
-    const float3 d = balls[j].xyz - centre;
-    held_index[held] = j;
-    held += (j != self && (own_group < 0 || entry_group[j] != own_group) && dot(d, d) <= cutoff2) ? 1 : 0;
-    if (held == 8) {
-      batch_fill(batch, balls, held_index, held, centre);
+// The tile lists laid out for the scan below: entry k of the lists (occluder occluders[k]) gets a copy of its ball,
+// by axis (x of every entry, then y, z and radius, entry_stride apart), and its tag: the occluder's tree
+// (occluder_group) where tag_by_group is set (the one pass), else its index. Entries entry_count .. entry_stride - 1
+// are padding, so that a run of eight from any entry stays inside the buffers; they carry tag -1 and a zero ball.
+__kernel void tile_entries(__global const float4* balls, __global const int* occluders, const int entry_count,
+                           __global const int* occluder_group, const int tag_by_group, const int entry_stride,
+                           __global float* entries, __global int* entry_tag) {
+  const int k = get_global_id(0);
+  if (k >= entry_stride) return;
+  const int j = k < entry_count ? occluders[k] : -1;
+  const float4 ball = j >= 0 ? balls[j] : (float4)(0.0f);
+  entries[k] = ball.x, entries[entry_stride + k] = ball.y;
+  entries[2 * entry_stride + k] = ball.z, entries[3 * entry_stride + k] = ball.w;
+  entry_tag[k] = j < 0 ? -1 : tag_by_group ? occluder_group[j] : j;
+}
+
+// The near field from the receiver's tile list, entries scan.x .. scan.y - 1 of the lists laid out by axis: the x of
+// every entry, then y, z and radius, `entry_stride` apart (each a copy of its occluder's ball: the list is read in
+// order, eight entries at a time, instead of through an index into the stand's balls; docs/performance.md "Narrow
+// windows in one run a band, and the tile lists read in order"). The entries within the cut-off (squared: cutoff2) of
+// the receiver at `centre` whose tag differs from `excluded_tag` (light_culled: the occluder index and the receiver's
+// own; the one pass: the tree of each entry and the receiver's tree) shade log_b, eight at a time, in the order of the
+// list.
+// Without a branch on the distance: each of the eight entries' places is written into the next free slot of `held`,
+// and only those kept claim theirs; once eight are held, they go to the batch. Every hit adds the same log t, so
+// neither this order nor the shells' changes a patch's sum.
+inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __global const float* entries,
+                                     int entry_stride, __global const int* entry_tag, int excluded_tag, int2 scan,
+                                     float3 centre, float cutoff2, __global const float* axes, float log_t) {
+#pragma OPENCL FP_CONTRACT OFF
+  const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  int held[16];
+  int count = 0;
+  for (int k = scan.x; k < scan.y; k += 8) {
+    const float8 dx = vload8(0, entries + k) - centre.x;
+    const float8 dy = vload8(0, entries + entry_stride + k) - centre.y;
+    const float8 dz = vload8(0, entries + 2 * entry_stride + k) - centre.z;
+    // each square rounded, then summed, without fused multiply-adds: the test dot(d, d) <= cutoff2 made before the
+    // lists were laid out by axis, bit for bit (and so the same tables)
+    const int8 keep = vload8(0, entry_tag + k) != excluded_tag && dx * dx + dy * dy + dz * dz <= cutoff2 &&
+                      k + lane < scan.y;  // -1 in each lane kept
+    int kept[8];
+    vstore8(keep, 0, kept);
+    for (int l = 0; l < 8; ++l) held[count] = k + l, count -= kept[l];
+    if (count >= 8) {
+      batch_fill(batch, entries, entry_stride, held, 8, centre);
       batch_finish(batch, log_b, axes, log_t);
-      held = 0;
+      count -= 8;
+      for (int l = 0; l < count; ++l) held[l] = held[8 + l];
     }
   }
-  batch_fill(batch, balls, held_index, held, centre);
+  batch_fill(batch, entries, entry_stride, held, count, centre);
   batch_finish(batch, log_b, axes, log_t);
 }
 
@@ -366,7 +430,7 @@ inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __globa
 // LightParameters::far_field_bias_correction the clumping index is already in the table's density.
 __kernel void light_culled(__global const float4* balls, __global const int* receivers,
                            __global const int2* receiver_scan, const int receiver_count,
-                           __global const int* candidates,
+                           __global const float* entries, const int entry_stride, __global const int* entry_tag,
                            __global const float4* patches, __global const float* axes, __global const float* b0,
                            const float log_t, __global const float* far_by_cell, const float4 grid_origin,
                            const float4 grid_cell, const int4 grid_dims, const int periodic, const float cutoff,
@@ -381,22 +445,23 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
   OccluderBatch batch;
   batch_clear(&batch);
-  shade_by_tile_candidates(log_b, &batch, balls, candidates, scan, centre, cutoff2, self, candidates, -1, axes, log_t);
+  shade_by_tile_candidates(log_b, &batch, entries, entry_stride, entry_tag, self, scan, centre, cutoff2, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }
 
 // light_culled and light_each_alone in one pass (the stand's light and the open-grown light of its trees): the
 // receiver's own tree, balls[group_start[g] .. group_start[g + 1]), is projected once, in the tree's own frame
-// (`group_balls`, as light_each_alone reads them), and each hit shades both skies: the tree alone's always, the
-// stand's when the ball lies within the cut-off. The stand's candidate scan then skips every entry of the tree
-// (`entry_group`: the tree of each occluder entry, images included). The host fuses only where no image of a tree's
-// ball can come within the cut-off of another of its balls, so the stand's near field holds the same balls as
+// (`group_balls`, as light_each_alone reads them), and each hit shades both skies: the tree alone's always, the stand's
+// when the ball lies within the cut-off. The stand's candidate scan then skips every entry of the tree (`entry_tag`:
+// the tree of each list entry, images included; `entry_group`: of each occluder). The host fuses only where no image of
+// a tree's ball can come within the cut-off of another of its balls, so the stand's near field holds the same balls as
 // light_culled's; their offsets differ only by float round-off (the tree's frame is nearer). The tree-alone sky is
 // light_each_alone's, bit for bit: the same offsets, windows and hit tests, and every hit adds the same log t.
 __kernel void light_culled_and_alone(__global const float4* balls, __global const int* receivers,
                                      __global const int2* receiver_scan, const int receiver_count,
-                                     __global const int* candidates, __global const int* entry_group,
+                                     __global const float* entries, const int entry_stride,
+                                     __global const int* entry_tag, __global const int* entry_group,
                                      __global const float4* group_balls, __global const int* group_start,
                                      __global const float4* patches, __global const float* axes,
                                      __global const float* b0, __global const float* b0_alone, const float log_t,
@@ -441,7 +506,7 @@ __kernel void light_culled_and_alone(__global const float4* balls, __global cons
   const float3 centre = balls[self].xyz;
   OccluderBatch batch;
   batch_clear(&batch);
-  shade_by_tile_candidates(log_b, &batch, balls, candidates, scan, centre, cutoff2, self, entry_group, g, axes, log_t);
+  shade_by_tile_candidates(log_b, &batch, entries, entry_stride, entry_tag, g, scan, centre, cutoff2, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }

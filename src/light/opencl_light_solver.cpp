@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <optional>
 
 #include <glm/common.hpp>
@@ -53,6 +56,16 @@ struct KeptBuffer {
   cl::Buffer buffer;
   std::size_t bytes = 0;
 };
+
+// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy.
+const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes) {
+  if (bytes > kept.bytes) {
+    kept.buffer = cl::Buffer();  // let the old one go before the new one is made
+    kept.bytes = bytes + bytes / 8;
+    kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, kept.bytes);
+  }
+  return kept.buffer;
+}
 
 // The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
 // out by cell; it stays there for the culled kernel.
@@ -185,7 +198,9 @@ struct OpenCLLightSolver::Device {
   cl::Kernel far_field_by_cell;
   cl::Kernel each_alone;
   cl::Kernel culled_and_alone;
+  cl::Kernel tile_entries;
   KeptBuffer far_field_table;  // sweep_far_field's, laid out by cell
+  KeptBuffer tile_entries_by_axis, tile_entry_tags;  // the tile lists as the culled kernels scan them
 };
 
 // What the fused pass (light_culled_and_alone) adds to a culled solve: each receiver's group lit alone as `solver`
@@ -215,6 +230,7 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
   device_->far_field_by_cell = cl::Kernel(device_->program, "far_field_by_cell");
   device_->each_alone = cl::Kernel(device_->program, "light_each_alone");
   device_->culled_and_alone = cl::Kernel(device_->program, "light_culled_and_alone");
+  device_->tile_entries = cl::Kernel(device_->program, "tile_entries");
 }
 
 OpenCLLightSolver::~OpenCLLightSolver() = default;
@@ -397,9 +413,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
       receiver_balls[k] = cl_int(receivers[near.slots[k]]);
       receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
     }
-  const cl::Buffer candidates_buffer =
-      read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
-  const double search_seconds = seconds_since(part_start);
+  double search_seconds = seconds_since(part_start);
   // The fused pass: each group in its own frame, the group of every occluder entry (an image's is its ball's),
   // and the open-grown solver's B0 (a different sky_scale rounds differently; the patches are the stand's, since
   // solve_with_each_alone fuses only with the same bands and sectors).
@@ -413,6 +427,37 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
     group_start_buffer = read_only(context, frames.group_start);
     alone_b0_buffer = read_only(context, sky_data_of(CelestialSphere(alone->solver.parameters_)).b0);
   }
+  // The tile lists laid out on the device for the scan (cl/light.cl, tile_entries): each entry's ball copied in, by
+  // axis, and its tag, read in order eight at a time by the culled kernels. That scan costs less than reading the
+  // balls through the lists' indices did (docs/performance.md "Narrow windows in one run a band, and the tile lists
+  // read in order"), for 20 bytes an entry on the device where the index took 4; the buffers are kept from one
+  // solve to the next, as the far field's table is.
+  part_start = Clock::now();
+  const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
+  if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
+    throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
+                             " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
+  const cl::Buffer& entries_buffer =
+      kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
+  const cl::Buffer& entry_tag_buffer =
+      kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
+  {
+    const cl::Buffer occluders_buffer =
+        read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
+    auto& k = device_->tile_entries;
+    int arg = 0;
+    k.setArg(arg++, balls_buffer);
+    k.setArg(arg++, occluders_buffer);
+    k.setArg(arg++, cl_int(near.occluders.size()));
+    k.setArg(arg++, alone != nullptr ? *entry_group_buffer : occluders_buffer);  // read only when tagged by group
+    k.setArg(arg++, cl_int(alone != nullptr ? 1 : 0));
+    k.setArg(arg++, cl_int(entry_stride));
+    k.setArg(arg++, entries_buffer);
+    k.setArg(arg++, entry_tag_buffer);
+    compute::launch(device_->cl, k, entry_stride);
+    queue.finish();  // the index list goes here; the layout's time is the search's
+  }
+  search_seconds += seconds_since(part_start);
 
   const auto start = Clock::now();
   std::vector<cl_float4> result(receivers.size()), alone_result(alone != nullptr ? receivers.size() : 0);
@@ -433,7 +478,9 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
     k.setArg(arg++, receivers_buffer);
     k.setArg(arg++, scan_buffer);
     k.setArg(arg++, cl_int(count));
-    k.setArg(arg++, candidates_buffer);
+    k.setArg(arg++, entries_buffer);
+    k.setArg(arg++, cl_int(entry_stride));
+    k.setArg(arg++, entry_tag_buffer);
     if (alone != nullptr) {
       k.setArg(arg++, *entry_group_buffer);
       k.setArg(arg++, *group_balls_buffer);

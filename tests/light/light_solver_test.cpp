@@ -410,8 +410,11 @@ TEST(LightBatches, EveryOccluderCountFromNoneToTwoFullBatchesMatchesTheReference
 // The kernels test a ball's window of patches band by band, in runs of up to eight neighbouring patches
 // (cl/light.cl, shade_band): a window across sector 0 (from either side) is two runs, one wider than eight sectors
 // or around the zenith is several, and on a sky whose sector count is not a multiple of eight a run's last eight
-// read into the next band. Balls placed in exactly those directions from a receiver, every ball also a receiver,
-// must match the reference on skies of 16 x 32, 6 x 7 and 4 x 9 patches, in the exact, culled and open-grown kernels.
+// read into the next band. On a sky of 16 sectors or more a window of at most eight sectors is one run of eight a
+// band without a mask (shade_narrow), placed back from the band's last sector, or two where it wraps past sector 0
+// (on 16 sectors, the whole band). Balls placed in exactly those directions from a receiver, every ball also a
+// receiver, must match the reference on skies of 16 x 32, 8 x 16, 6 x 7 and 4 x 9 patches, in the exact, culled and
+// open-grown kernels.
 TEST(LightPatchRuns, WindowsAcrossSectorZeroAroundTheZenithAndWideMatchTheReference) {
   const auto device = compute::opencl_backend_for_test();
   if (!device) GTEST_SKIP() << "no OpenCL device";
@@ -424,7 +427,7 @@ TEST(LightPatchRuns, WindowsAcrossSectorZeroAroundTheZenithAndWideMatchTheRefere
                                    std::cos(polar)};
         balls.push_back({distance * direction * (1.0 + 0.7 * sin_half_angle), distance * sin_half_angle});
       }
-  for (const auto& [bands, sectors] : {std::pair{16, 32}, std::pair{6, 7}, std::pair{4, 9}}) {
+  for (const auto& [bands, sectors] : {std::pair{16, 32}, std::pair{8, 16}, std::pair{6, 7}, std::pair{4, 9}}) {
     LightParameters exact;
     exact.exact = true;
     exact.sky_bands = bands;
