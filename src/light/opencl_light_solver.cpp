@@ -57,11 +57,13 @@ struct KeptBuffer {
   std::size_t bytes = 0;
 };
 
-// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy.
-const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes) {
+// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy (never beyond
+// `cap_bytes`, unless `bytes` themselves are).
+const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes,
+                                std::size_t cap_bytes = std::numeric_limits<std::size_t>::max()) {
   if (bytes > kept.bytes) {
     kept.buffer = cl::Buffer();  // let the old one go before the new one is made
-    kept.bytes = bytes + bytes / 8;
+    kept.bytes = std::max(bytes, std::min(bytes + bytes / 8, cap_bytes));
     kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, kept.bytes);
   }
   return kept.buffer;
@@ -100,13 +102,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // written again below). On a CPU device the layout into a fresh buffer took three to four times as long as into
   // a used one: every page touched for the first time (docs/performance.md "The far-field table kept from one
   // solve to the next"). An eighth to spare spares a growing canopy a new buffer every year, within the cap.
-  const std::size_t table_bytes = cells * row * sizeof(float);
-  if (table_bytes > table_kept.bytes) {
-    table_kept.buffer = cl::Buffer();  // let the old one go before the new one is made
-    table_kept.bytes = std::max(table_bytes, std::min(table_bytes + table_bytes / 8, table_cap_bytes));
-    table_kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, table_kept.bytes);
-  }
-  const cl::Buffer& table = table_kept.buffer;
+  const cl::Buffer& table = kept_at_least(context, table_kept, cells * row * sizeof(float), table_cap_bytes);
   by_cell.setArg(0, depth);
   by_cell.setArg(1, table);
   by_cell.setArg(2, cl_int(cells));
