@@ -1,5 +1,6 @@
 #include "compute/device_choice.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <stdexcept>
 
@@ -38,6 +39,12 @@ std::string DeviceChoice::text() const {
     case Kind::opencl: return opencl_index ? "opencl:" + std::to_string(*opencl_index) : "opencl";
   }
   return "auto";
+}
+
+std::optional<int> default_opencl_device(const std::vector<std::string>& types) {
+  if (types.empty()) return std::nullopt;
+  const auto gpu = std::find(types.begin(), types.end(), "GPU");
+  return gpu != types.end() ? static_cast<int>(gpu - types.begin()) : 0;
 }
 
 bool opencl_device_exists() { return !list_opencl_devices().empty(); }

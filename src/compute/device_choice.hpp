@@ -1,9 +1,10 @@
 #pragma once
 // Which compute backend runs the light and root-contact fields: the --device option (run.device in a scenario).
 // compute/compute_backend.hpp opens the chosen one.
-//   auto       first OpenCL device; no OpenCL platform -> warn once, use the reference solver
+//   auto       the default OpenCL device (default_opencl_device: the first GPU, else the first device); no OpenCL
+//              platform -> warn once, use the reference solver
 //   reference  the plain C++ oracle
-//   opencl     first OpenCL device; none -> error
+//   opencl     the default OpenCL device; none -> error
 //   opencl:N   OpenCL device N in `heliostand devices` numbering; missing -> error
 #include <optional>
 #include <string>
@@ -31,6 +32,12 @@ struct OpenCLDeviceInfo {
   unsigned compute_units = 0;
   bool is_default = false;  // the one `auto` and `opencl` pick
 };
+
+// The device `auto` and `opencl` pick among devices of these types (OpenCLDeviceInfo::type, in enumeration order):
+// the first GPU, else the first device; none when there is no device. A machine may carry both a CPU runtime (PoCL,
+// which the set-up installs) and a GPU's driver, enumerated in either order, and a user with a GPU expects the run on
+// it: the hectare's 60 years take ~2.5 min on an H100 and ~20 min on PoCL on two cores (docs/performance.md).
+std::optional<int> default_opencl_device(const std::vector<std::string>& types);
 
 // Every OpenCL device of every platform; empty when there is no OpenCL platform (clGetPlatformIDs -> -1001)
 // or when the build has no OpenCL.

@@ -63,17 +63,21 @@ std::vector<OpenCLDeviceInfo> list_opencl_devices() {
     info.type = type_name(device.getInfo<CL_DEVICE_TYPE>());
     info.version = device.getInfo<CL_DEVICE_VERSION>();
     info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
-    info.is_default = index == 0;
     infos.push_back(info);
     ++index;
   }
+  std::vector<std::string> types;
+  for (const auto& info : infos) types.push_back(info.type);
+  if (const auto chosen = default_opencl_device(types)) infos[static_cast<std::size_t>(*chosen)].is_default = true;
   return infos;
 }
 
 std::optional<OpenCLContext> open_opencl_device(std::optional<int> index) {
   auto all = enumerate();
   if (all.empty()) return std::nullopt;
-  const int chosen = index.value_or(0);
+  std::vector<std::string> types;
+  for (const auto& [platform, device] : all) types.push_back(type_name(device.getInfo<CL_DEVICE_TYPE>()));
+  const int chosen = index ? *index : default_opencl_device(types).value_or(0);
   if (chosen < 0 || chosen >= static_cast<int>(all.size()))
     throw std::runtime_error("OpenCL device " + std::to_string(chosen) + " does not exist (" +
                              std::to_string(all.size()) + " found; see `heliostand devices`)");

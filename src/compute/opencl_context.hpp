@@ -20,8 +20,9 @@ struct OpenCLContext {
   int index = 0;
 };
 
-// Device `index` (heliostand devices numbering; nullopt = the default, device 0). Returns nullopt when there
-// is no OpenCL platform or no device at all; throws std::runtime_error when a given index does not exist.
+// Device `index` (heliostand devices numbering; nullopt = the default, default_opencl_device: the first GPU, else
+// device 0). Returns nullopt when there is no OpenCL platform or no device at all; throws std::runtime_error when a
+// given index does not exist.
 std::optional<OpenCLContext> open_opencl_device(std::optional<int> index);
 
 // Builds `source` for the context's device; throws std::runtime_error with the build log on failure.
