@@ -1,7 +1,9 @@
 #include "compute/opencl_context.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "compute/device_choice.hpp"
@@ -50,12 +52,22 @@ std::string type_name(cl_device_type type) {
   return "other";
 }
 
+// The default among the enumerated devices (default_opencl_device over their types): the one `heliostand devices`
+// marks and the one opened when no index is given.
+std::optional<int> default_of(const std::vector<PlatformDevice>& all) {
+  std::vector<std::string> types;
+  for (const auto& [platform, device] : all) types.push_back(type_name(device.getInfo<CL_DEVICE_TYPE>()));
+  return default_opencl_device(types);
+}
+
 }  // namespace
 
 std::vector<OpenCLDeviceInfo> list_opencl_devices() {
+  const auto all = enumerate();
+  const std::optional<int> chosen = default_of(all);
   std::vector<OpenCLDeviceInfo> infos;
   int index = 0;
-  for (const auto& [platform, device] : enumerate()) {
+  for (const auto& [platform, device] : all) {
     OpenCLDeviceInfo info;
     info.index = index;
     info.platform = platform.getInfo<CL_PLATFORM_NAME>();
@@ -63,21 +75,17 @@ std::vector<OpenCLDeviceInfo> list_opencl_devices() {
     info.type = type_name(device.getInfo<CL_DEVICE_TYPE>());
     info.version = device.getInfo<CL_DEVICE_VERSION>();
     info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+    info.is_default = index == chosen;
     infos.push_back(info);
     ++index;
   }
-  std::vector<std::string> types;
-  for (const auto& info : infos) types.push_back(info.type);
-  if (const auto chosen = default_opencl_device(types)) infos[static_cast<std::size_t>(*chosen)].is_default = true;
   return infos;
 }
 
 std::optional<OpenCLContext> open_opencl_device(std::optional<int> index) {
   auto all = enumerate();
   if (all.empty()) return std::nullopt;
-  std::vector<std::string> types;
-  for (const auto& [platform, device] : all) types.push_back(type_name(device.getInfo<CL_DEVICE_TYPE>()));
-  const int chosen = index ? *index : default_opencl_device(types).value_or(0);
+  const int chosen = index ? *index : default_of(all).value_or(0);
   if (chosen < 0 || chosen >= static_cast<int>(all.size()))
     throw std::runtime_error("OpenCL device " + std::to_string(chosen) + " does not exist (" +
                              std::to_string(all.size()) + " found; see `heliostand devices`)");
