@@ -4,16 +4,24 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <tuple>
 
 #include <flann/flann.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
+
 namespace heliostand {
 namespace {
 
 using TileKey = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
+
+// Tiles a worker thread searches and lays out at a time: some hundreds of occluders each, so blocks stay well above
+// the cost of handing them out.
+constexpr std::size_t tiles_per_block = 64;
 
 TileKey tile_of(const glm::dvec3& point, double tile_m) {
   return {static_cast<std::int64_t>(std::floor(point.x / tile_m)), static_cast<std::int64_t>(std::floor(point.y / tile_m)),
@@ -43,6 +51,30 @@ class ShellLayout {
 
  private:
   std::array<double, near_field_shells - 1> outer_squared_{};
+};
+
+// One tile's occluders within the search's radius, in the order FLANN's walk of the k-d tree finds them (the order
+// its batch radius search returned them in, unsorted), each with its shell. The batch search gave each tile two
+// vectors of its own, an index and a distance per occluder (577 MB at 10^6 balls); a collector per block of tiles is
+// reused instead, and the tiles' searches run on the worker threads rather than through FLANN's OpenMP loop.
+class ShellCollector : public flann::ResultSet<double> {
+ public:
+  ShellCollector(double radius_squared, const ShellLayout& shells) : radius_squared_(radius_squared), shells_(shells) {}
+  void clear() { found.clear(), shell.clear(); }
+  bool full() const override { return true; }
+  void addPoint(double squared_distance, std::size_t index) override {
+    if (!(squared_distance < radius_squared_)) return;
+    found.push_back(static_cast<std::uint32_t>(index));
+    shell.push_back(shells_.of_squared(squared_distance));
+  }
+  double worstDist() const override { return radius_squared_; }
+
+  std::vector<std::uint32_t> found;
+  std::vector<std::uint8_t> shell;
+
+ private:
+  double radius_squared_;
+  const ShellLayout& shells_;
 };
 
 }  // namespace
@@ -94,46 +126,63 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
     lists.scan_end.assign(lists.slots.size(), 0);
     return lists;
   }
-  flann::SearchParams search;
-  search.sorted = false;   // order does not matter: transmittance is a product
-  search.max_neighbors = -1;
-  search.cores = 0;        // all cores (FLANN's OpenMP loop over the queries)
-  std::vector<std::vector<std::size_t>> found;
-  std::vector<std::vector<double>> squared_distances;
   // Every point of a tile lies within its half-diagonal of the centre; L2_Simple works on squared distances.
-  // The 1e-4 relative slack covers FLANN's float radius: a few extra occluders, discarded by distance.
+  // The 1e-4 relative slack covers the float radius FLANN's batch search took (kept: the same occluders as
+  // before): a few extra occluders, discarded by distance.
   const double reach = (cutoff_m_ + 0.5 * std::sqrt(3.0) * tile_m) * (1.0 + 1e-4);
-  index_->tree.radiusSearch(flann::Matrix<double>(queries.data(), tile_count, 3), found, squared_distances,
-                            static_cast<float>(reach * reach), search);
+  const double radius_squared = static_cast<float>(reach * reach);
+  const ShellLayout shells{cutoff_m_, reach};
   // Each tile's occluders in shells of distance from its centre, in the order FLANN found them within a shell
   // (deterministic: one query's walk of the tree). The order cannot change the light: every near-field hit
   // multiplies a patch by the same transmittance t (adds the same log t on OpenCL), so a patch's value depends
   // only on how many balls hit it. A full sort took half of the search (10^6 balls: 2.06 -> 1.06 s without it,
   // outputs byte-identical; docs/performance.md); shells are one counting pass.
-  const ShellLayout shells{cutoff_m_, reach};
-  std::size_t total = 0;
-  for (const auto& tile : found) total += tile.size();
-  lists.occluders.resize(total);
-  lists.start.reserve(tile_count + 1);
-  lists.scan_end.resize(lists.slots.size());
-  std::array<std::uint32_t, near_field_shells> shell_size{}, shell_end{};
-  std::vector<std::uint8_t> shell_of_found;
-  for (std::size_t t = 0; t < tile_count; ++t) {
-    shell_size.fill(0);
-    shell_of_found.resize(found[t].size());
-    for (std::size_t k = 0; k < found[t].size(); ++k)
-      ++shell_size[shell_of_found[k] = shells.of_squared(squared_distances[t][k])];
-    // Each shell's first place; placing its occluders moves it to the shell's end.
-    std::exclusive_scan(shell_size.begin(), shell_size.end(), shell_end.begin(), lists.start.back());
-    for (std::size_t k = 0; k < found[t].size(); ++k)
-      lists.occluders[shell_end[shell_of_found[k]]++] = static_cast<std::uint32_t>(found[t][k]);
-    lists.start.push_back(shell_end.back());
-    const glm::dvec3 centre(queries[3 * t], queries[3 * t + 1], queries[3 * t + 2]);
-    for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) {
-      const double need = cutoff_m_ + glm::distance(occluders_.centres[receivers[lists.slots[k]]], centre) + 1e-3;
-      lists.scan_end[k] = shell_end[shells.of_squared(need * need)];
+  // Blocks of tiles on the worker threads, each tile's list in its block's own array, then copied to its place.
+  const std::size_t block_count = (tile_count + tiles_per_block - 1) / tiles_per_block;
+  std::vector<std::vector<std::uint32_t>> block_lists(block_count);
+  std::vector<std::uint32_t> tile_size(tile_count);
+  lists.scan_end.resize(lists.slots.size());  // relative to the tile's start until its place is known
+  parallel_for(block_count, [&](std::size_t block) {
+    ShellCollector collector(radius_squared, shells);
+    const flann::SearchParams exact;  // eps 0: every occluder within the radius
+    std::array<std::uint32_t, near_field_shells> shell_size{}, shell_end{};
+    std::vector<std::uint32_t>& out = block_lists[block];
+    for (std::size_t t = block * tiles_per_block; t < std::min(tile_count, (block + 1) * tiles_per_block); ++t) {
+      collector.clear();
+      index_->tree.findNeighbors(collector, &queries[3 * t], exact);
+      const std::size_t first = out.size();
+      shell_size.fill(0);
+      for (const std::uint8_t shell : collector.shell) ++shell_size[shell];
+      // Each shell's first place; placing its occluders moves it to the shell's end.
+      std::exclusive_scan(shell_size.begin(), shell_size.end(), shell_end.begin(), std::uint32_t(first));
+      out.resize(first + collector.found.size());
+      for (std::size_t k = 0; k < collector.found.size(); ++k) out[shell_end[collector.shell[k]]++] = collector.found[k];
+      tile_size[t] = std::uint32_t(collector.found.size());
+      const glm::dvec3 centre(queries[3 * t], queries[3 * t + 1], queries[3 * t + 2]);
+      for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) {
+        const double need = cutoff_m_ + glm::distance(occluders_.centres[receivers[lists.slots[k]]], centre) + 1e-3;
+        lists.scan_end[k] = shell_end[shells.of_squared(need * need)] - std::uint32_t(first);
+      }
     }
+  });
+  lists.start.resize(tile_count + 1);
+  std::uint64_t total = 0;
+  for (std::size_t t = 0; t < tile_count; ++t) {
+    total += tile_size[t];
+    if (total > std::numeric_limits<std::uint32_t>::max())
+      throw std::runtime_error("the light's near-field tile lists hold more than 2^32 entries; use a shorter [light] "
+                               "cutoff_m or a smaller stand");
+    lists.start[t + 1] = std::uint32_t(total);
   }
+  lists.occluders.resize(total);
+  parallel_for(block_count, [&](std::size_t block) {
+    const std::size_t first_tile = block * tiles_per_block;
+    const std::vector<std::uint32_t>& out = block_lists[block];
+    std::copy(out.begin(), out.end(), lists.occluders.begin() + lists.start[first_tile]);
+    std::vector<std::uint32_t>().swap(block_lists[block]);
+    for (std::size_t t = first_tile; t < std::min(tile_count, first_tile + tiles_per_block); ++t)
+      for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) lists.scan_end[k] += lists.start[t];
+  });
   return lists;
 }
 

@@ -430,6 +430,9 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   // solve to the next, as the far field's table is.
   part_start = Clock::now();
   const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
+  if (set.centres.size() > std::size_t(std::numeric_limits<cl_int>::max()))
+    throw std::runtime_error("the light's stand holds " + std::to_string(set.centres.size()) +
+                             " leaf balls with their periodic images, more than the OpenCL kernels can index");
   if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
     throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
                              " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
@@ -438,8 +441,9 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   const cl::Buffer& entry_tag_buffer =
       kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
   {
-    const cl::Buffer occluders_buffer =
-        read_only(context, std::vector<cl_int>(near.occluders.begin(), near.occluders.end()));
+    // The indices go as they are (unsigned, read as int by the kernel: the occluders are fewer than 2^31, checked
+    // above), not through an int copy of the whole list (144 MB at 10^6 balls).
+    const cl::Buffer occluders_buffer = read_only(context, near.occluders);
     auto& k = device_->tile_entries;
     int arg = 0;
     k.setArg(arg++, balls_buffer);

@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
 #include "rng/random_stream.hpp"
@@ -83,6 +84,29 @@ TEST(NearFieldSearch, PeriodicImagesAndASubsetOfReceiversAreFound) {
   std::vector<std::uint32_t> receivers;
   for (std::uint32_t k = 0; k < balls.size(); k += 7) receivers.push_back(k);
   expect_tiles_hold_every_near_occluder(set, receivers, 2.0, tile_edge_for(2.0));
+}
+
+// The tiles' lists are laid out in blocks of tiles on the worker threads: the same lists, entry for entry, on any
+// number of them (the light's order of occluders, and so its float sums on a GPU, depends on them).
+TEST(NearFieldSearch, TheSameListsOnAnyNumberOfThreads) {
+  const auto balls = scattered_balls(3000, 14.0, 3);
+  const OccluderSet set = make_occluder_set(balls, PlotTorus{}, 0.0);
+  std::vector<std::uint32_t> receivers(balls.size());
+  std::iota(receivers.begin(), receivers.end(), 0u);
+  const NearFieldSearch search(set, 2.0);
+  set_worker_threads(1);
+  const TileCandidates in_order = search.tile_candidates(receivers, tile_edge_for(2.0));
+  ASSERT_GT(in_order.tile_count(), 2 * 64u);  // more than one block of tiles
+  for (unsigned threads : {2u, 3u, 8u}) {
+    set_worker_threads(threads);
+    const TileCandidates near = search.tile_candidates(receivers, tile_edge_for(2.0));
+    EXPECT_EQ(near.slots, in_order.slots) << threads << " threads";
+    EXPECT_EQ(near.slot_start, in_order.slot_start) << threads << " threads";
+    EXPECT_EQ(near.start, in_order.start) << threads << " threads";
+    EXPECT_EQ(near.occluders, in_order.occluders) << threads << " threads";
+    EXPECT_EQ(near.scan_end, in_order.scan_end) << threads << " threads";
+  }
+  set_worker_threads(0);
 }
 
 TEST(NearFieldSearch, NoOccludersGiveEmptyLists) {
