@@ -3,7 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include "compute/compute_backend.hpp"
+#include "light/celestial_sphere.hpp"
+#include "light/far_field.hpp"
 #include "light/make_light_solver.hpp"
+#include "light/near_field.hpp"
+#include "light/occluders.hpp"
 #include "light/synthetic_canopy.hpp"
 
 namespace heliostand {
@@ -29,6 +33,36 @@ void BM_OpenCLLightCulled(benchmark::State& state) { solve_canopy(state, DeviceC
 void BM_OpenCLLightExact(benchmark::State& state) { solve_canopy(state, DeviceChoice::Kind::opencl, true); }
 void BM_ReferenceLightExact(benchmark::State& state) { solve_canopy(state, DeviceChoice::Kind::reference, true); }
 
+// The far field's host part, what every culled solve does before its table is swept: the density of the canopy's
+// balls per cell and its clumping index, on the synthetic canopies of `heliostand bench light --balls N` (default
+// parameters; 10^6 balls get coarser cells under the table's cap, as there).
+void BM_FarFieldDensityAndClumping(benchmark::State& state) {
+  const auto canopy = make_synthetic_canopy(static_cast<std::size_t>(state.range(0)), 1);
+  LightParameters p;
+  p.plot_x_max = p.plot_y_max = canopy.plot_size_m;
+  const CelestialSphere sky(p);
+  const OccluderSet set = make_occluder_set(canopy.balls, PlotTorus::from(p), p.cutoff_m);
+  for (auto _ : state) benchmark::DoNotOptimize(FarField(set, p, sky, false).density());
+  state.SetItemsProcessed(state.iterations() * state.range(0));  // balls per second
+}
+
+// The near-field search of a culled solve on the same canopies: the k-d tree, and every tile's candidate list laid
+// out in shells (what `bench light` reports as search_seconds, less the lists' copy to the device).
+void BM_NearFieldSearch(benchmark::State& state) {
+  const auto canopy = make_synthetic_canopy(static_cast<std::size_t>(state.range(0)), 1);
+  LightParameters p;
+  const OccluderSet set = make_occluder_set(canopy.balls, PlotTorus::from(p), p.cutoff_m);
+  std::vector<std::uint32_t> receivers(canopy.balls.size());
+  for (std::uint32_t k = 0; k < receivers.size(); ++k) receivers[k] = k;
+  for (auto _ : state) {
+    const NearFieldSearch search(set, p.cutoff_m);
+    benchmark::DoNotOptimize(search.tile_candidates(receivers, tile_edge_for(p.cutoff_m)).occluders.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));  // balls per second
+}
+
+BENCHMARK(BM_NearFieldSearch)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FarFieldDensityAndClumping)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenCLLightCulled)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenCLLightExact)->Arg(1000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ReferenceLightExact)->Arg(500)->Unit(benchmark::kMillisecond)->UseRealTime();
