@@ -131,9 +131,10 @@ void add_band_cells(const std::uint8_t* band_pixels, const Face& face, const std
 // Balls cast their shadow along `axis` onto the face of their own slab of cells; per cell of the slab, adds
 // -ln(mean transmission) to `log_gap` and the mean number of shadows over a pixel to `hits`.
 // Each slab's face is rasterised one band of cells at a time (P rows of pixels), its discs' rows that fall in the
-// band, and the band's cells summed before the next: the pixels of a band stay in the caches, where a whole face
-// (24 MB at 10^6 balls) missed them at the first touch of nearly every row (docs/performance.md "The clumping index band by band, and the tiles' searches on the worker threads"). Every pixel gets the same shadows and every cell the same sum, in the same order, as
-// when the face was rasterised whole.
+// band, and the band's cells summed before the next: the pixels of a band stay in the nearer caches, where a whole
+// face (7 MB at 10^6 balls) missed them at the first touch of nearly every row (docs/performance.md "The clumping
+// index band by band, and the tiles' searches on the worker threads"). Every pixel gets the same shadows and every
+// cell the same sum, in the same order, as when the face was rasterised whole.
 void add_shadows_along(int axis, const OccluderSet& occluders, const VoxelGrid& grid, double t, int pixels_per_cell,
                        std::vector<double>& log_gap, std::vector<double>& hits) {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
