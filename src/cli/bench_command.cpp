@@ -128,6 +128,11 @@ void add_bench_light_command(CLI::App& bench) {
   light->add_option("--subsample", options->subsample, "Balls in the subsample (timing extrapolation and errors)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  light->add_option("--evaluations", options->evaluations,
+                    "Evaluations of the OpenCL culled + far-field solver, one after another with one solver (the "
+                    "first is the row's, the later ones are listed after it: they reuse the buffers it keeps)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
+      ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
   light->callback([options, scenarios, output, overrides, balls] {
     // stdout carries the JSON: progress lines go to stderr (logs always go to stderr)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 
 #include <fmt/format.h>
@@ -32,6 +33,7 @@ struct Run {
   double mean_candidates = 0;
   double mean_tile_candidates = 0;
   std::vector<LightSample> at_subsample;  // answers at the error-measurement balls
+  std::vector<Run> later;                 // later evaluations by the same solver (LightBenchmarkOptions::evaluations)
 };
 
 struct Error {
@@ -94,20 +96,45 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
   return run;
 }
 
+std::string times_json(const Run& run) {
+  return fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "search_seconds": {:.6g}, )"
+                     R"("far_field_seconds": {:.6g})",
+                     run.seconds, run.setup_seconds, run.search_seconds, run.far_field_seconds);
+}
+
 std::string run_json(const Run& run, const Run& truth) {
   if (!run.ran) return "null";
-  std::string text = fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "search_seconds": {:.6g}, )"
-                                 R"("far_field_seconds": {:.6g}, "far_field_cell_m": {:.6g}, )"
-                                 R"("estimated_from_subsample": {})",
-                                 run.seconds, run.setup_seconds, run.search_seconds, run.far_field_seconds,
-                                 run.far_field_cell_m, run.estimated ? "true" : "false");
+  std::string text = times_json(run) + fmt::format(R"(, "far_field_cell_m": {:.6g}, "estimated_from_subsample": {})",
+                                                   run.far_field_cell_m, run.estimated ? "true" : "false");
   if (&run != &truth && truth.ran) {
     const Error e = error_against(truth.at_subsample, run.at_subsample);
     text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"
                         R"("mean_light_bias": {:.6g}, "mean_angle_degrees": {:.6g}}})",
                         e.mean_abs_light, e.max_abs_light, e.mean_light_bias, e.mean_angle_degrees);
   }
+  if (!run.later.empty()) {
+    text += R"(, "later_evaluations": [)";
+    for (std::size_t k = 0; k < run.later.size(); ++k) text += (k > 0 ? ", " : "") + times_json(run.later[k]) + "}";
+    text += "]";
+  }
   return text + "}";
+}
+
+// `evaluations - 1` more evaluations of `run`'s solver on the same balls. Each must light the subsample as the
+// first did, bit for bit: a solver's kept buffers are reused, never read before they are written.
+void time_later_evaluations(Run& run, LightSolver& solver, const std::vector<LeafBall>& balls,
+                            const std::vector<std::uint32_t>& subsample, std::size_t max_balls,
+                            std::size_t evaluations) {
+  for (std::size_t k = 1; k < evaluations; ++k) {
+    Run later = time_solver(run.name + fmt::format(" (evaluation {})", k + 1), solver, balls, subsample, max_balls);
+    for (std::size_t b = 0; b < subsample.size(); ++b)
+      if (later.at_subsample[b].light != run.at_subsample[b].light ||
+          later.at_subsample[b].vector != run.at_subsample[b].vector)
+        throw std::runtime_error(fmt::format("bench light: evaluation {} of {} lit ball {} differently from the first",
+                                             k + 1, run.name, subsample[b]));
+    later.at_subsample.clear();
+    run.later.push_back(std::move(later));
+  }
 }
 
 std::string ratio(const Run& slow, const Run& fast) {
@@ -167,6 +194,7 @@ std::string solver_rows(const LightBenchmarkOptions& options, const std::vector<
     (void)culled_solver->solve(std::span(balls).first(std::min<std::size_t>(balls.size(), 64)));  // warm-up
     opencl_exact = time_solver("opencl exact", *exact_solver, balls, subsample, options.opencl_exact_max);
     opencl_culled = time_solver("opencl culled+far-field", *culled_solver, balls, subsample, balls.size());
+    time_later_evaluations(opencl_culled, *culled_solver, balls, subsample, balls.size(), options.evaluations);
   }
   const bool whole = balls.size() <= options.reference_exact_max;
   return fmt::format(

@@ -22,6 +22,10 @@ struct LightBenchmarkOptions {
   std::size_t reference_culled_max = 30000;
   std::size_t opencl_exact_max = 20000;
   std::size_t subsample = 400;            // balls in the subsample (also where errors are measured)
+  // Evaluations of the OpenCL culled + far-field solver (the default), one after another with one solver. The first
+  // is the row's; the later ones, as every year after the first of a run, find the buffers the solver keeps on its
+  // device already made (and the memory under them already touched) and are listed after it.
+  std::size_t evaluations = 1;
 };
 
 // A real stand's canopy as the light solver sees it. The light module does not know stands: the caller

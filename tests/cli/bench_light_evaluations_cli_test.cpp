@@ -1,0 +1,59 @@
+// `heliostand bench light --evaluations N`: the default solver (OpenCL culled + far field) lights each canopy N
+// times in a row with one solver. The first evaluation is the row's, as without the flag; the later ones, which find
+// the solver's kept buffers made (as every year after the first of a run does), are listed after it. Zero
+// evaluations is bad input, refused before any JSON is written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_runner.hpp"
+#include "compute/device_choice.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string small = " --balls 300 --subsample 50 --reference-exact-max 300 --reference-culled-max 0 -q";
+
+}  // namespace
+
+TEST(BenchLightEvaluationsCli, LaterEvaluationsAreListedAfterTheFirst) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device: the default solver's row is not run";
+  const fs::path folder = scratch_folder("bench-light-evaluations");
+  fs::create_directories(folder);
+  const CliResult three = run_cli("bench light" + small + " --evaluations 3 -o " + (folder / "three.json").string());
+  ASSERT_EQ(three.status, 0) << three.output;
+  const auto row =
+      nlohmann::json::parse(read_text(folder / "three.json")).at("stands").at(0).at("opencl_culled_far_field");
+  ASSERT_TRUE(row.contains("later_evaluations")) << row.dump(1);
+  const auto& later = row.at("later_evaluations");
+  ASSERT_EQ(later.size(), 2u) << row.dump(1);
+  for (const auto& evaluation : later) {
+    EXPECT_GT(evaluation.at("setup_seconds").get<double>(), 0.0) << evaluation.dump();
+    EXPECT_GE(evaluation.at("seconds").get<double>(), evaluation.at("setup_seconds").get<double>())
+        << evaluation.dump();
+    EXPECT_GE(evaluation.at("setup_seconds").get<double>(),
+              evaluation.at("search_seconds").get<double>() + evaluation.at("far_field_seconds").get<double>())
+        << evaluation.dump();
+  }
+  EXPECT_TRUE(row.contains("error_vs_reference_exact")) << "the first evaluation is still the row's";
+
+  const CliResult one = run_cli("bench light" + small + " -o " + (folder / "one.json").string());
+  ASSERT_EQ(one.status, 0) << one.output;
+  const auto first_only = nlohmann::json::parse(read_text(folder / "one.json")).at("stands").at(0);
+  EXPECT_FALSE(first_only.at("opencl_culled_far_field").contains("later_evaluations")) << "one evaluation by default";
+}
+
+TEST(BenchLightEvaluationsCli, ZeroEvaluationsIsRefusedBeforeAnyJson) {
+  const fs::path folder = scratch_folder("bench-light-evaluations-zero");
+  fs::create_directories(folder);
+  const fs::path json = folder / "light.json";
+  const CliResult refused = run_cli("bench light" + small + " --device none --evaluations 0 -o " + json.string());
+  EXPECT_NE(refused.status, 0) << refused.output;
+  EXPECT_NE(refused.output.find("--evaluations"), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
+  EXPECT_FALSE(fs::exists(json));
+}
+
+}  // namespace heliostand::testing
