@@ -1,16 +1,19 @@
 #include "cli/bench_command.hpp"
 
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
+#include "io/output_folder.hpp"
 #include "light/light_benchmark.hpp"
 #include "run/established_canopy.hpp"
 #include "run/stand_benchmark.hpp"
@@ -18,11 +21,15 @@
 namespace heliostand::cli {
 namespace {
 
+// The file first, under a temporary name renamed into place, then stdout: a file that cannot be written leaves
+// neither a half-written file nor a report on stdout that the exit status calls failed.
 void print_json(const std::string& json, const std::string& output) {
+  if (!output.empty()) {
+    AtomicFile file(output);
+    if (!file.write(json)) throw std::runtime_error(fmt::format("cannot write {}: {}", output, std::strerror(errno)));
+    file.commit();
+  }
   std::cout << json;
-  if (output.empty()) return;
-  std::ofstream out(output);
-  if (!(out << json)) throw std::runtime_error("cannot write " + output);
 }
 
 std::string check_device(const std::string& text) {

@@ -1,0 +1,42 @@
+// The JSON of `heliostand bench light` and `bench stand` goes to stdout and, with -o, to a file. A file that cannot
+// be written is an error that names it, with a non-zero exit, and then nothing is reported: no JSON on stdout (which
+// a script would take for a result) and no file, whole or half-written.
+#include <gtest/gtest.h>
+
+#include "cli/cli_runner.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string reference_only = " --balls 300 --subsample 20 --device none --reference-culled-max 0 -q";
+
+}  // namespace
+
+TEST(BenchOutputCli, AnUnwritableFileIsAnErrorAndNothingIsReported) {
+  const fs::path folder = scratch_folder("bench-output-unwritable");
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path json = folder / "no-such-folder" / "light.json";
+  const CliResult refused = run_cli("bench light" + reference_only + " -o " + json.string());
+  EXPECT_NE(refused.status, 0) << refused.output;
+  EXPECT_NE(refused.output.find("cannot write " + json.string()), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
+  EXPECT_FALSE(fs::exists(json.parent_path()));
+}
+
+TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
+  const fs::path folder = scratch_folder("bench-output-writable");
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path json = folder / "light.json";
+  const CliResult written = run_cli("bench light" + reference_only + " -o " + json.string());
+  ASSERT_EQ(written.status, 0) << written.output;
+  const std::string file = read_text(json);
+  EXPECT_NE(file.find("\"benchmark\": \"light\""), std::string::npos) << file;
+  EXPECT_NE(written.output.find(file), std::string::npos) << "stdout carries the same JSON";
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1) << "only light.json";
+}
+
+}  // namespace heliostand::testing
