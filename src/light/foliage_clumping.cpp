@@ -156,7 +156,7 @@ void add_shadows_along(int axis, const OccluderSet& occluders, const VoxelGrid& 
   parallel_for_blocks(slab_count, block, [&](std::size_t first, std::size_t last) {
     std::vector<std::uint8_t> band_pixels(std::size_t(P) * face.nu);
     std::vector<FaceDisc> discs;
-    std::vector<std::uint32_t> band_start(grid.dims[v] + 1), band_discs;
+    std::vector<std::uint32_t> band_start(grid.dims[v] + 1), band_fill, band_discs;
     for (int s = int(first); s < int(last); ++s) {
       if (slabs[s].empty()) continue;
       discs.clear();
@@ -164,16 +164,17 @@ void add_shadows_along(int axis, const OccluderSet& occluders, const VoxelGrid& 
         const double cu = (occluders.centres[k][u] - grid.origin[u]) / pu - 0.5;  // in pixel-centre units
         const double cv = (occluders.centres[k][v] - grid.origin[v]) / pv - 0.5;
         const double r = occluders.radii[k];
-        discs.push_back({cu, cv, r, static_cast<int>(std::ceil(cv - r / pv)), static_cast<int>(std::floor(cv + r / pv))});
+        discs.push_back(
+            {cu, cv, r, static_cast<int>(std::ceil(cv - r / pv)), static_cast<int>(std::floor(cv + r / pv))});
       }
       // The discs of each band, in the slab's order (a counting sort; a disc across two bands is in both).
       std::fill(band_start.begin(), band_start.end(), 0);
       for (const FaceDisc& disc : discs) for_each_band(disc, face.rows, P, [&](int band) { ++band_start[band + 1]; });
       for (int b = 0; b < grid.dims[v]; ++b) band_start[b + 1] += band_start[b];
       band_discs.resize(band_start.back());
-      std::vector<std::uint32_t> fill(band_start.begin(), band_start.end() - 1);
+      band_fill.assign(band_start.begin(), band_start.end() - 1);
       for (std::uint32_t d = 0; d < discs.size(); ++d)
-        for_each_band(discs[d], face.rows, P, [&](int band) { band_discs[fill[band]++] = d; });
+        for_each_band(discs[d], face.rows, P, [&](int band) { band_discs[band_fill[band]++] = d; });
       for (int b = 0; b < grid.dims[v]; ++b) {
         if (band_start[b] == band_start[b + 1]) continue;  // no shadow: every cell of the band keeps its density
         std::fill(band_pixels.begin(), band_pixels.end(), 0);

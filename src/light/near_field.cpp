@@ -138,16 +138,15 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
   // only on how many balls hit it. A full sort took half of the search (10^6 balls: 2.06 -> 1.06 s without it,
   // outputs byte-identical; docs/performance.md); shells are one counting pass.
   // Blocks of tiles on the worker threads, each tile's list in its block's own array, then copied to its place.
-  const std::size_t block_count = (tile_count + tiles_per_block - 1) / tiles_per_block;
-  std::vector<std::vector<std::uint32_t>> block_lists(block_count);
+  std::vector<std::vector<std::uint32_t>> block_lists((tile_count + tiles_per_block - 1) / tiles_per_block);
   std::vector<std::uint32_t> tile_size(tile_count);
   lists.scan_end.resize(lists.slots.size());  // relative to the tile's start until its place is known
-  parallel_for(block_count, [&](std::size_t block) {
+  parallel_for_blocks(tile_count, tiles_per_block, [&](std::size_t first_tile, std::size_t last_tile) {
     ShellCollector collector(radius_squared, shells);
     const flann::SearchParams exact;  // eps 0: every occluder within the radius
     std::array<std::uint32_t, near_field_shells> shell_size{}, shell_end{};
-    std::vector<std::uint32_t>& out = block_lists[block];
-    for (std::size_t t = block * tiles_per_block; t < std::min(tile_count, (block + 1) * tiles_per_block); ++t) {
+    std::vector<std::uint32_t>& out = block_lists[first_tile / tiles_per_block];
+    for (std::size_t t = first_tile; t < last_tile; ++t) {
       collector.clear();
       index_->tree.findNeighbors(collector, &queries[3 * t], exact);
       const std::size_t first = out.size();
@@ -175,12 +174,11 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
     lists.start[t + 1] = std::uint32_t(total);
   }
   lists.occluders.resize(total);
-  parallel_for(block_count, [&](std::size_t block) {
-    const std::size_t first_tile = block * tiles_per_block;
-    const std::vector<std::uint32_t>& out = block_lists[block];
+  parallel_for_blocks(tile_count, tiles_per_block, [&](std::size_t first_tile, std::size_t last_tile) {
+    std::vector<std::uint32_t>& out = block_lists[first_tile / tiles_per_block];
     std::copy(out.begin(), out.end(), lists.occluders.begin() + lists.start[first_tile]);
-    std::vector<std::uint32_t>().swap(block_lists[block]);
-    for (std::size_t t = first_tile; t < std::min(tile_count, first_tile + tiles_per_block); ++t)
+    std::vector<std::uint32_t>().swap(out);
+    for (std::size_t t = first_tile; t < last_tile; ++t)
       for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) lists.scan_end[k] += lists.start[t];
   });
   return lists;
