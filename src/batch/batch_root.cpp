@@ -80,8 +80,7 @@ void write_composed_scenario(const fs::path& root, const BatchRun& run) {
   }
   fs::create_directories(target.parent_path());
   AtomicFile file(target);
-  if (!file.write(run.composed_scenario))
-    throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
+  file.write(run.composed_scenario);
   file.commit();
 }
 

@@ -48,7 +48,7 @@ std::string status_fields(const RunResult& result) {
 
 void write_atomically(const fs::path& file, const std::string& contents) {
   AtomicFile atomic(file);
-  if (!atomic.write(contents)) throw std::runtime_error(fmt::format("cannot write {}", atomic.temporary_path().string()));
+  atomic.write(contents);
   atomic.commit();
 }
 

@@ -1,7 +1,5 @@
 #include "cli/bench_command.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -26,7 +24,7 @@ namespace {
 void print_json(const std::string& json, const std::string& output) {
   if (!output.empty()) {
     AtomicFile file(output);
-    if (!file.write(json)) throw std::runtime_error(fmt::format("cannot write {}: {}", output, std::strerror(errno)));
+    file.write(json);
     file.commit();
   }
   std::cout << json;

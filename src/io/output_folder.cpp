@@ -1,6 +1,8 @@
 #include "io/output_folder.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <system_error>
 
@@ -30,11 +32,17 @@ AtomicFile::~AtomicFile() {
   fs::remove_all(temporary_, ignored);
 }
 
-bool AtomicFile::write(std::string_view contents) const {
+void AtomicFile::write(std::string_view contents) const {
+  // errno is read only where the stream failed, and cleared first: a failure that sets none (a short write the
+  // library noticed itself) must not be reported with the reason of some earlier, unrelated call ("Success").
+  errno = 0;
   std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
   out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
   out.close();
-  return static_cast<bool>(out);
+  if (out) return;
+  const int reason = errno;
+  throw OutputFolderError(fmt::format("cannot write {}: {}", final_.string(),
+                                      reason != 0 ? std::strerror(reason) : "the write stopped short"));
 }
 
 void AtomicFile::commit() {
@@ -122,7 +130,7 @@ void OutputFolder::write_file(const fs::path& relative, std::string_view content
   const fs::path target = path_of(relative);
   fs::create_directories(target.parent_path());
   AtomicFile file(target);
-  if (!file.write(contents)) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
+  file.write(contents);
   file.commit();
   record_output(relative);
 }

@@ -35,9 +35,10 @@ class AtomicFile {
   const std::filesystem::path& final_path() const { return final_; }
   bool committed() const { return committed_; }
 
-  // Writes `contents` as the whole temporary file; false when it could not be written (each caller says so in
-  // its own error).
-  [[nodiscard]] bool write(std::string_view contents) const;
+  // Writes `contents` as the whole temporary file. If it cannot be written, throws OutputFolderError
+  // "cannot write FINAL_PATH: REASON", naming the file the user asked for (not its temporary) and the system's
+  // reason, or that the write stopped short where the system gave none.
+  void write(std::string_view contents) const;
   void commit();   // rename temporary → final (replacing an older final file)
 
  private:

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -103,6 +105,21 @@ TEST(AtomicFile, CommitRenamesOverAnOlderFile) {
   file.commit();
   EXPECT_EQ(read_text(target), "new");
   EXPECT_FALSE(fs::exists(file.temporary_path()));
+}
+
+TEST(AtomicFile, AFileThatCannotBeWrittenIsAnErrorNamingItAndTheReason) {
+  testing::TempFolder tmp("atomic_unwritable");
+  const fs::path target = tmp.path() / "no such folder" / "light.json";
+  AtomicFile file(target);
+  errno = 0;  // no stale reason to borrow: the one in the message must come from the failed write itself
+  try {
+    file.write("{}");
+    FAIL() << "expected an error";
+  } catch (const OutputFolderError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write " + target.string() + ": " + std::strerror(ENOENT));
+  }
+  EXPECT_FALSE(fs::exists(file.temporary_path()));
+  EXPECT_FALSE(fs::exists(target));
 }
 
 }  // namespace
