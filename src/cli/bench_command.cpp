@@ -5,8 +5,6 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
-#include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
 #include "cli/seed_option.hpp"
@@ -140,8 +138,8 @@ void add_bench_light_command(CLI::App& bench) {
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
   light->callback([options, scenarios, output, overrides, balls] {
-    // stdout carries the JSON: progress lines go to stderr (logs always go to stderr)
-    if (!spdlog::get("heliostand-bench")) spdlog::set_default_logger(spdlog::stderr_color_mt("heliostand-bench"));
+    // stdout carries the JSON; the progress lines go to the default logger, which writes to stderr at the level
+    // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
     // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
     std::vector<LightBenchmarkStand> stands;

@@ -40,4 +40,16 @@ TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
   EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1) << "only light.json";
 }
 
+// -q leaves only warnings and errors on stderr: the progress lines (one as each solver starts and ends) are info.
+TEST(BenchOutputCli, QuietLeavesOnlyTheJson) {
+  const std::string without_quiet = reference_only.substr(0, reference_only.rfind(" -q"));
+  const CliResult chatty = run_cli("bench light" + without_quiet);
+  ASSERT_EQ(chatty.status, 0) << chatty.output;
+  EXPECT_NE(chatty.output.find("bench light: 300 balls"), std::string::npos) << "the progress lines shown: " << chatty.output;
+  const CliResult quiet = run_cli("bench light" + reference_only);
+  ASSERT_EQ(quiet.status, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("bench light:"), std::string::npos) << quiet.output;
+  EXPECT_EQ(quiet.output.front(), '{') << "stdout holds the JSON alone: " << quiet.output;
+}
+
 }  // namespace heliostand::testing
