@@ -131,13 +131,19 @@ void add_bench_light_command(CLI::App& bench) {
   light->add_option("--subsample", options->subsample, "Balls in the subsample (timing extrapolation and errors)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  light->add_option("--evaluations", options->evaluations,
+  auto* evaluations = light->add_option("--evaluations", options->evaluations,
                     "Evaluations of the OpenCL culled + far-field solver, one after another with one solver (the "
                     "first is the row's, the later ones are listed after it: they reuse the buffers it keeps)")
       ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
-  light->callback([options, scenarios, output, overrides, balls] {
+  light->callback([options, scenarios, output, overrides, balls, evaluations] {
+    // Later evaluations are of the OpenCL solver: without it there is nothing to repeat, and a flag that silently
+    // did nothing would leave a user reading one evaluation as several.
+    if (options->opencl_device == "none" && options->evaluations > 1)
+      throw CLI::ValidationError(evaluations->get_name(),
+                                 "more than one evaluation needs the OpenCL solver; --device none runs only the "
+                                 "reference solvers, once each");
     // stdout carries the JSON; the progress lines go to the default logger, which writes to stderr at the level
     // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for

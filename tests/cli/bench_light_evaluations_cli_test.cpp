@@ -56,4 +56,20 @@ TEST(BenchLightEvaluationsCli, ZeroEvaluationsIsRefusedBeforeAnyJson) {
   EXPECT_FALSE(fs::exists(json));
 }
 
+// The later evaluations are the OpenCL solver's: with --device none there is none, so asking for more than one is
+// a usage error rather than a flag that silently does nothing.
+TEST(BenchLightEvaluationsCli, SeveralEvaluationsWithoutTheOpenCLSolverAreRefused) {
+  const fs::path folder = scratch_folder("bench-light-evaluations-none");
+  fs::create_directories(folder);
+  const fs::path json = folder / "light.json";
+  const CliResult refused = run_cli("bench light" + small + " --device none --evaluations 2 -o " + json.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--evaluations"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("--device none"), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
+  EXPECT_FALSE(fs::exists(json));
+  const CliResult one = run_cli("bench light" + small + " --device none --evaluations 1");
+  EXPECT_EQ(one.status, 0) << "one evaluation is what --device none runs anyway: " << one.output;
+}
+
 }  // namespace heliostand::testing
