@@ -4,6 +4,9 @@
 // evaluations is bad input, refused before any JSON is written.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
@@ -45,29 +48,33 @@ TEST(BenchLightEvaluationsCli, LaterEvaluationsAreListedAfterTheFirst) {
   EXPECT_FALSE(first_only.at("opencl_culled_far_field").contains("later_evaluations")) << "one evaluation by default";
 }
 
-TEST(BenchLightEvaluationsCli, ZeroEvaluationsIsRefusedBeforeAnyJson) {
-  const fs::path folder = scratch_folder("bench-light-evaluations-zero");
+namespace {
+
+// `bench light` with `flags` is a usage error (exit 2) whose message holds each of `named`, and nothing is reported:
+// no JSON on stdout and no -o file.
+void expect_refused_before_any_json(const std::string& test_name, const std::string& flags,
+                                    const std::vector<std::string>& named) {
+  const fs::path folder = scratch_folder(test_name);
   fs::create_directories(folder);
   const fs::path json = folder / "light.json";
-  const CliResult refused = run_cli("bench light" + small + " --device none --evaluations 0 -o " + json.string());
-  EXPECT_NE(refused.status, 0) << refused.output;
-  EXPECT_NE(refused.output.find("--evaluations"), std::string::npos) << refused.output;
+  const CliResult refused = run_cli("bench light" + small + flags + " -o " + json.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  for (const std::string& text : named) EXPECT_NE(refused.output.find(text), std::string::npos) << refused.output;
   EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
   EXPECT_FALSE(fs::exists(json));
+}
+
+}  // namespace
+
+TEST(BenchLightEvaluationsCli, ZeroEvaluationsIsRefusedBeforeAnyJson) {
+  expect_refused_before_any_json("bench-light-evaluations-zero", " --device none --evaluations 0", {"--evaluations"});
 }
 
 // The later evaluations are the OpenCL solver's: with --device none there is none, so asking for more than one is
 // a usage error rather than a flag that silently does nothing.
 TEST(BenchLightEvaluationsCli, SeveralEvaluationsWithoutTheOpenCLSolverAreRefused) {
-  const fs::path folder = scratch_folder("bench-light-evaluations-none");
-  fs::create_directories(folder);
-  const fs::path json = folder / "light.json";
-  const CliResult refused = run_cli("bench light" + small + " --device none --evaluations 2 -o " + json.string());
-  EXPECT_EQ(refused.status, 2) << refused.output;
-  EXPECT_NE(refused.output.find("--evaluations"), std::string::npos) << refused.output;
-  EXPECT_NE(refused.output.find("--device none"), std::string::npos) << refused.output;
-  EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
-  EXPECT_FALSE(fs::exists(json));
+  expect_refused_before_any_json("bench-light-evaluations-none", " --device none --evaluations 2",
+                                 {"--evaluations", "--device none"});
   const CliResult one = run_cli("bench light" + small + " --device none --evaluations 1");
   EXPECT_EQ(one.status, 0) << "one evaluation is what --device none runs anyway: " << one.output;
 }
