@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <span>
 
+#include "core/parallel_for.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
 #include "light/light_sum.hpp"
@@ -64,13 +66,16 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   const double t = parameters_.transmittance;
   statistics_ = {};
   std::vector<LightSample> samples;
-  samples.reserve(receivers.size());
 
   if (parameters_.exact) {
     const OccluderSet set = make_occluder_set(balls, torus, 0.0);
     const auto start = Clock::now();
-    for (auto i : receivers) {
+    samples.resize(receivers.size());
+    // Receivers on the worker threads: each sample is its own receiver's alone, computed as on one thread.
+    parallel_for(receivers.size(), [&](std::size_t k) {
+      const std::uint32_t i = receivers[k];
       std::vector<double> intensity;  // B(h, v)
+      intensity.reserve(sky.patches().size());
       for (const auto& patch : sky.patches()) {
         double b = patch.initial_intensity;
         for_each_exact_occluder(set, torus, i, [&](const glm::dvec3& centre, double radius) {
@@ -78,8 +83,8 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
         });
         intensity.push_back(b);
       }
-      samples.push_back(light_sample(sky, intensity));
-    }
+      samples[k] = light_sample(sky, intensity);
+    });
     statistics_.evaluate_seconds = seconds_since(start);
     statistics_.mean_candidates = torus.periodic ? 9.0 * balls.size() - 1 : double(balls.size()) - 1;
     return samples;
@@ -99,18 +104,23 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
 
   start = Clock::now();
   samples.resize(receivers.size());
-  std::size_t candidate_total = 0, scanned_total = 0;
-  std::vector<std::uint32_t> occluders;
-  for (std::size_t tile = 0; tile < near.tile_count(); ++tile)
+  // Tiles on the worker threads: each receiver's sample is computed as on one thread, into its own slot; the
+  // counts are whole numbers, so their sums do not depend on the order either.
+  std::vector<std::size_t> candidates_of_tile(near.tile_count()), scanned_of_tile(near.tile_count());
+  parallel_for(near.tile_count(), [&](std::size_t tile) {
+    std::vector<std::uint32_t> occluders;
     for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
       const std::uint32_t slot = near.slots[k];
       occluders.clear();
       for (auto c = near.start[tile]; c < near.scan_end[k]; ++c)  // the shells that can hold its near field
         if (search.within_cutoff(receivers[slot], near.occluders[c])) occluders.push_back(near.occluders[c]);
-      candidate_total += occluders.size();
-      scanned_total += near.scan_end[k] - near.start[tile];
+      candidates_of_tile[tile] += occluders.size();
+      scanned_of_tile[tile] += near.scan_end[k] - near.start[tile];
       samples[slot] = culled_sample(set, occluders, far, set.centres[receivers[slot]], sky, torus, t);
     }
+  });
+  const std::size_t candidate_total = std::accumulate(candidates_of_tile.begin(), candidates_of_tile.end(), std::size_t{0});
+  const std::size_t scanned_total = std::accumulate(scanned_of_tile.begin(), scanned_of_tile.end(), std::size_t{0});
   statistics_.mean_candidates = receivers.empty() ? 0.0 : double(candidate_total) / receivers.size();
   statistics_.mean_tile_candidates = receivers.empty() ? 0.0 : double(scanned_total) / receivers.size();
   statistics_.evaluate_seconds = seconds_since(start);
