@@ -5,6 +5,8 @@
 #include <flann/flann.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
+
 namespace heliostand::roots {
 
 glm::dvec3 nearest_point_on_segment(const glm::dvec3& point, const RootSegmentLine& segment) {
@@ -66,33 +68,38 @@ std::vector<RootFieldSample> ReferenceRootFieldSolver::query(std::span<const Roo
                                                              std::span<const glm::dvec3> probes, int probes_per_tip) {
   std::vector<RootFieldSample> samples(tips.size());
   const std::size_t per_tip = static_cast<std::size_t>(std::max(probes_per_tip, 0));
-  if (year_.soil != nullptr && per_tip > 0)
-    for (std::size_t t = 0; t < tips.size(); ++t)
-      samples[t].moisture_pull = moisture_pull(tips[t].position, tips[t].perception_radius_m,
-                                               probes.subspan(t * per_tip, per_tip), *year_.soil);
-  if (!index_) return samples;
+  // Blocks of apices on the worker threads: each sample is its own apex's, summed in the order one thread sums it
+  // (the k-d tree is only read), so the answers do not depend on the threads.
+  parallel_for_blocks(tips.size(), apices_per_block, [&](std::size_t from, std::size_t to) {
+    if (year_.soil != nullptr && per_tip > 0)
+      for (std::size_t t = from; t < to; ++t)
+        samples[t].moisture_pull = moisture_pull(tips[t].position, tips[t].perception_radius_m,
+                                                 probes.subspan(t * per_tip, per_tip), *year_.soil);
+    if (index_)
+      for (std::size_t t = from; t < to; ++t) samples[t] = with_contacts(tips[t], samples[t]);
+  });
+  return samples;
+}
 
+// The contact avoidance at one apex: every other segment whose nearest point lies inside the perception sphere.
+RootFieldSample ReferenceRootFieldSolver::with_contacts(const RootTipQuery& tip, RootFieldSample sample) const {
   flann::SearchParams search;
   search.sorted = false;
   std::vector<std::vector<std::size_t>> found(1);
   std::vector<std::vector<double>> distances(1);
-  for (std::size_t t = 0; t < tips.size(); ++t) {
-    const RootTipQuery& tip = tips[t];
-    double query_point[3] = {tip.position.x, tip.position.y, tip.position.z};
-    const flann::Matrix<double> query(query_point, 1, 3);
-    const double reach = tip.perception_radius_m + index_->longest_half;
-    index_->tree.radiusSearch(query, found, distances, static_cast<float>(reach * reach * (1.0 + 1e-5) + 1e-9), search);
-    RootFieldSample& sample = samples[t];
-    for (std::size_t s : found[0]) {
-      if (static_cast<int>(s) == tip.excluded[0] || static_cast<int>(s) == tip.excluded[1]) continue;
-      const glm::dvec3 toward = nearest_point_on_segment(tip.position, year_.segments[s]) - tip.position;
-      const double distance = glm::length(toward);
-      if (distance >= tip.perception_radius_m || distance < touching_distance_m) continue;
-      sample.contact_avoidance -= toward / distance;
-      ++sample.contacts;
-    }
+  double query_point[3] = {tip.position.x, tip.position.y, tip.position.z};
+  const flann::Matrix<double> query(query_point, 1, 3);
+  const double reach = tip.perception_radius_m + index_->longest_half;
+  index_->tree.radiusSearch(query, found, distances, static_cast<float>(reach * reach * (1.0 + 1e-5) + 1e-9), search);
+  for (std::size_t s : found[0]) {
+    if (static_cast<int>(s) == tip.excluded[0] || static_cast<int>(s) == tip.excluded[1]) continue;
+    const glm::dvec3 toward = nearest_point_on_segment(tip.position, year_.segments[s]) - tip.position;
+    const double distance = glm::length(toward);
+    if (distance >= tip.perception_radius_m || distance < touching_distance_m) continue;
+    sample.contact_avoidance -= toward / distance;
+    ++sample.contacts;
   }
-  return samples;
+  return sample;
 }
 
 }  // namespace heliostand::roots

@@ -2,7 +2,8 @@
 // The plain C++ root-contact field: candidate segments from a FLANN k-d tree over segment midpoints
 // (radius search with R + the longest half segment, so no segment whose nearest point is inside the
 // sphere is missed), then the exact nearest-point test. Double precision; the oracle for OpenCL.
-// The k-d tree is built once a year (begin_year) and serves every query of that year.
+// The k-d tree is built once a year (begin_year) and serves every query of that year; a query's apices share the
+// worker threads (core/parallel_for.hpp), each summed as on one thread.
 #include <memory>
 
 #include "roots/root_field_solver.hpp"
@@ -21,6 +22,8 @@ class ReferenceRootFieldSolver final : public RootFieldSolver {
 
  private:
   struct Index;
+  static constexpr std::size_t apices_per_block = 64;  // an apex alone is too little work to hand to a thread
+  RootFieldSample with_contacts(const RootTipQuery& tip, RootFieldSample sample) const;
   RootFieldYear year_;
   std::unique_ptr<Index> index_;  // none while the year has no segments
 };

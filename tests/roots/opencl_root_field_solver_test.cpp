@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "compute/opencl_test_backend.hpp"
-#include "rng/random_stream.hpp"
+#include "grown_root_stand.hpp"
 #include "roots/make_root_field_solver.hpp"
 #include "roots/reference_root_field_solver.hpp"
 #include "roots/root_growth.hpp"
@@ -19,22 +19,7 @@
 namespace heliostand::roots {
 namespace {
 
-struct GrownStand {
-  SoilGrid soil{{{-4.0, -4.0, -3.0}, 0.25, {32, 32, 12}}, 1.0, 0.5};
-  std::vector<RootSystem> trees;
-};
-
-GrownStand grown_stand(int years, std::uint64_t seed) {
-  GrownStand stand;
-  stand.soil.fill_gradient(SoilField::moisture, 0, 1.0, 0.1);
-  for (int t = 0; t < 3; ++t)
-    stand.trees.emplace_back(t, glm::dvec3(-1.0 + 1.0 * t, 0.3 * t, 0.0), tap_rooted_conifer(), 0);
-  std::vector<RootSystem*> pointers;
-  for (RootSystem& tree : stand.trees) pointers.push_back(&tree);
-  ReferenceRootFieldSolver solver;
-  for (int year = 1; year <= years; ++year) grow_roots(pointers, stand.soil, solver, year, seed);
-  return stand;
-}
+using test_stands::GrownStand;
 
 // Null only where there is no OpenCL device; a kernel that does not build throws (the test fails).
 std::unique_ptr<RootFieldSolver> make_opencl_or_null() {
@@ -47,29 +32,12 @@ TEST(OpenCLRootFieldSolver, MatchesTheReferenceOnGrownRootSystems) {
   if (!opencl) GTEST_SKIP() << "no OpenCL device";
   ReferenceRootFieldSolver reference;
   for (std::uint64_t seed : {1u, 2u}) {
-    GrownStand stand = grown_stand(10, seed);
-    std::vector<RootSystem*> pointers;
-    for (RootSystem& tree : stand.trees) pointers.push_back(&tree);
-    const StandSegments segments = gather_segments(pointers);
-    // Every segment end is an apex (as in growth: it excludes its own segment and that one's parent).
-    std::vector<RootTipQuery> tips;
-    std::vector<glm::dvec3> probes;
-    constexpr int probes_per_tip = 16;
-    RandomStream random(seed, {99});
-    for (std::size_t t = 0; t < stand.trees.size(); ++t)
-      for (std::size_t s = 0; s < stand.trees[t].segments().size(); ++s) {
-        const RootSegment& segment = stand.trees[t].segments()[s];
-        RootTipQuery tip;
-        tip.position = segment.end;
-        tip.perception_radius_m = random.uniform(0.1, 0.4);
-        tip.excluded[0] = segments.offsets[t] + static_cast<int>(s);
-        tip.excluded[1] = segment.parent >= 0 ? segments.offsets[t] + segment.parent : -1;
-        tips.push_back(tip);
-        const auto drawn = draw_moisture_probes(random, probes_per_tip);
-        probes.insert(probes.end(), drawn.begin(), drawn.end());
-      }
+    GrownStand stand = test_stands::grown_stand(10, seed);
+    const test_stands::ApexQueries queries = test_stands::apices_at_every_segment_end(stand, seed);
+    const StandSegments& segments = queries.segments;
+    const std::vector<RootTipQuery>& tips = queries.tips;
     ASSERT_GT(tips.size(), 500u);
-    RootFieldInput input{segments.lines, tips, probes, probes_per_tip, &stand.soil};
+    const RootFieldInput input = queries.input(stand.soil);
     const auto expected = reference.solve(input);
     const auto actual = opencl->solve(input);
     ASSERT_EQ(actual.size(), expected.size());
