@@ -65,12 +65,11 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   const PlotTorus torus = PlotTorus::from(parameters_);
   const double t = parameters_.transmittance;
   statistics_ = {};
-  std::vector<LightSample> samples;
+  std::vector<LightSample> samples(receivers.size());  // each written by the thread that lights its receiver
 
   if (parameters_.exact) {
     const OccluderSet set = make_occluder_set(balls, torus, 0.0);
     const auto start = Clock::now();
-    samples.resize(receivers.size());
     // Receivers on the worker threads: each sample is its own receiver's alone, computed as on one thread.
     parallel_for(receivers.size(), [&](std::size_t k) {
       const std::uint32_t i = receivers[k];
@@ -103,7 +102,6 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   statistics_.setup_seconds = seconds_since(start);
 
   start = Clock::now();
-  samples.resize(receivers.size());
   // Tiles on the worker threads: each receiver's sample is computed as on one thread, into its own slot; the
   // counts are whole numbers, so their sums do not depend on the order either.
   std::vector<std::size_t> candidates_of_tile(near.tile_count()), scanned_of_tile(near.tile_count());
