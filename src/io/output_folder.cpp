@@ -18,6 +18,11 @@ fs::path temporary_sibling(const fs::path& final_path) {
   return final_path.parent_path() / name;
 }
 
+OutputFolderError cannot_write(const fs::path& final_path, int reason) {
+  return OutputFolderError(fmt::format("cannot write {}: {}", final_path.string(),
+                                       reason != 0 ? std::strerror(reason) : "the write stopped short"));
+}
+
 AtomicFile::AtomicFile(fs::path final_path)
     : final_(std::move(final_path)), temporary_(temporary_sibling(final_)) {}
 
@@ -39,10 +44,7 @@ void AtomicFile::write(std::string_view contents) const {
   std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
   out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
   out.close();
-  if (out) return;
-  const int reason = errno;
-  throw OutputFolderError(fmt::format("cannot write {}: {}", final_.string(),
-                                      reason != 0 ? std::strerror(reason) : "the write stopped short"));
+  if (!out) throw cannot_write(final_, errno);
 }
 
 void AtomicFile::commit() {

@@ -20,6 +20,11 @@ class OutputFolderError : public std::runtime_error {
 // Where a file is written before it is renamed to `final_path`: a hidden sibling "dir/.name.tmp".
 std::filesystem::path temporary_sibling(const std::filesystem::path& final_path);
 
+// "cannot write FINAL_PATH: REASON": the file the user asked for (not its temporary) and the system's reason for
+// `reason`, an errno value read right after the failed call, or that the write stopped short where it is 0 (the
+// library noticed a short write itself and the system gave no reason).
+OutputFolderError cannot_write(const std::filesystem::path& final_path, int reason);
+
 // A file under its temporary name until commit() renames it into place. If never committed (an
 // exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
 class AtomicFile {

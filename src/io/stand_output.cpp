@@ -1,5 +1,8 @@
 #include "io/stand_output.hpp"
 
+#include <cerrno>
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "io/stand_tables.hpp"
@@ -14,8 +17,17 @@ StandOutput::Table::Table(const std::filesystem::path& final_path, std::optional
       std::filesystem::rename(file.final_path(), file.temporary_path());
     std::filesystem::resize_file(file.temporary_path(), *resume_at);  // resume_tables() checked the length
   }
+  errno = 0;
   stream.open(file.temporary_path(), resume_at ? std::ios::app : std::ios::trunc);
-  if (!stream) throw OutputFolderError(fmt::format("cannot write {}", file.temporary_path().string()));
+  if (!stream) throw cannot_write(file.final_path(), errno);
+}
+
+void StandOutput::Table::flush() {
+  // Each year's rows are pushed to the file as soon as they are written, and a failure (a full disk, a file size
+  // limit) stops the run that year, with the system's reason, instead of decades later at the rename.
+  errno = 0;
+  stream.flush();
+  if (!stream) throw cannot_write(file.final_path(), errno);
 }
 
 namespace {
@@ -77,7 +89,7 @@ StandOutput::~StandOutput() {
 
 void StandOutput::record_events(std::span<const TreeEvent> events) {
   for (const TreeEvent& event : events) write_event_row(events_->csv, event);
-  events_->stream.flush();
+  events_->flush();
   events_of_year_.insert(events_of_year_.end(), events.begin(), events.end());
 }
 
@@ -85,23 +97,31 @@ void StandOutput::write_stand_rows(const StandInventory& inventory) {
   for (const StandTableRow& row : ledger_.rows_of_year(inventory, events_of_year_))
     write_stand_table_row(stand_table_->csv, row);
   events_of_year_.clear();
-  stand_table_->stream.flush();
+  stand_table_->flush();
 }
 
 void StandOutput::write_year(const StandSnapshot& snapshot) {
   write_tree_rows(trees_->csv, snapshot);
-  trees_->stream.flush();
+  trees_->flush();
   if (vtk_) vtk_->write_year(snapshot);
 }
 
 void StandOutput::close_tables() {
+  // Every table that closes whole is renamed into place, even after another failed: a run stopped by a failed
+  // table keeps the others' rows. The failed one is left to its AtomicFile, which deletes it.
+  std::optional<OutputFolderError> first_failure;
   for (Table* table : {stand_table_.get(), trees_.get(), events_.get()}) {
     if (table->file.committed()) continue;
+    errno = 0;
     table->stream.close();
-    if (!table->stream) throw OutputFolderError(fmt::format("cannot write {}", table->file.temporary_path().string()));
+    if (!table->stream) {
+      if (!first_failure) first_failure = cannot_write(table->file.final_path(), errno);
+      continue;
+    }
     table->file.commit();
     folder_.record_output(table->file.final_path().filename());
   }
+  if (first_failure) throw *first_failure;
 }
 
 void StandOutput::finish(RunManifest manifest) {

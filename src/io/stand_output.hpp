@@ -73,6 +73,7 @@ class StandOutput final : public YearRecorder {
     CsvWriter csv;
     // `resume_at`: reopen the temporary an interrupted run left, cut back to that many bytes, and append.
     explicit Table(const std::filesystem::path& final_path, std::optional<std::uint64_t> resume_at = std::nullopt);
+    void flush();  // throws "cannot write FINAL_PATH: REASON" if the rows could not be written
   };
 
   void resume_tables(const TableLengths& lengths);

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
+#include <sys/resource.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -211,6 +215,55 @@ TEST_F(StandOutputRun, ANonEmptyFolderIsRefusedAndLeftAlone) {
   EXPECT_THROW(StandOutput({root_, false, 100.0}), OutputFolderError);
   EXPECT_EQ(read_text(root_ / "field_notes.txt"), "plot 3");
   EXPECT_EQ(std::distance(fs::directory_iterator(root_), fs::directory_iterator()), 1);
+}
+
+// Files of this process can grow no further while it lives (RLIMIT_FSIZE down to one byte), as on a full disk:
+// a write past the limit fails with EFBIG, the signal it would also raise ignored. Both are restored after.
+class FileSizeLimit {
+ public:
+  FileSizeLimit() : old_handler_(std::signal(SIGXFSZ, SIG_IGN)) {
+    ::getrlimit(RLIMIT_FSIZE, &old_limit_);
+    rlimit limit = old_limit_;
+    limit.rlim_cur = 1;
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &old_limit_);
+    std::signal(SIGXFSZ, old_handler_);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  rlimit old_limit_{};
+  void (*old_handler_)(int);
+};
+
+TEST_F(StandOutputRun, ATableThatCannotBeWrittenStopsTheRunThatYearNamingItAndTheReason) {
+  std::string message;
+  int failed_in_year = -1;
+  {
+    StandOutput out({root_, false, 100.0, false});
+    out.write_stand_rows(inventory_of(stand_in_year(0).snapshot));
+    out.write_year(stand_in_year(0).snapshot);
+    out.write_stand_rows(inventory_of(stand_in_year(1).snapshot));
+    FileSizeLimit full_disk;
+    for (int year = 2; year <= 5 && failed_in_year < 0; ++year) {
+      try {
+        out.write_stand_rows(inventory_of(stand_in_year(year).snapshot));
+      } catch (const OutputFolderError& e) {
+        message = e.what();
+        failed_in_year = year;
+      }
+    }
+  }  // the run unwinds: the tables that closed whole are kept, the failed one is not
+  EXPECT_EQ(failed_in_year, 2) << "the first year whose rows could not be written must stop the run";
+  EXPECT_EQ(message, "cannot write " + (root_ / "stand_table.csv").string() + ": " + std::strerror(EFBIG));
+  EXPECT_FALSE(fs::exists(root_ / "stand_table.csv")) << "a table missing rows must not appear under its name";
+  EXPECT_TRUE(fs::exists(root_ / "trees.csv")) << "the tables that were written whole are kept";
+  EXPECT_TRUE(fs::exists(root_ / "events.csv"));
+  EXPECT_FALSE(fs::exists(root_ / "run.json"));
+  EXPECT_FALSE(has_temporaries(root_));
 }
 
 // Writes the tiny two-year stand the ParaView render checks (tests/scripts/paraview.cmake) open; its third tree
