@@ -14,3 +14,19 @@ add_test(NAME cli.no_opencl.auto_grows_on_reference
                  --device auto --force --out ${NO_OPENCL_OUT}/auto)
 set_tests_properties(cli.no_opencl.device_opencl_refused cli.no_opencl.auto_grows_on_reference
                      PROPERTIES LABELS input TIMEOUT 300)
+
+# In the sanitizer tree (CI's build without OpenCL), the unit tests whose answer depends on the build having no
+# OpenCL backend, and the oracles on the worker threads, run under ASan/UBSan from the one test program: the device
+# choice and the commands that refuse OpenCL work (fast), and the reference light and root-contact solvers giving
+# the same answer on any number of threads (about 50 s there). The whole unit suite under the sanitizers takes over
+# 30 minutes on 2 cores; a plain build without OpenCL runs all of it (`ctest -L unit`). Label "input", the label
+# that tree's CI run selects; CI builds heliostand_tests there for them.
+if(HELIOSTAND_SANITIZE)
+  add_test(NAME unit.no_opencl.device_choice_and_refusals
+           COMMAND heliostand_tests "--gtest_filter=ComputeBackend.*:Cli.*:CheckCli.*:GrowCli.UnknownDevice*:BenchLightEvaluationsCli.*:BenchStandCli.BadInput*:BenchLightStandCli.BadScenario*")
+  add_test(NAME unit.no_opencl.reference_solvers_on_threads
+           COMMAND heliostand_tests "--gtest_filter=*ReferenceLightSolverThreads.*:ReferenceRootFieldThreads.*")
+  set_tests_properties(unit.no_opencl.device_choice_and_refusals unit.no_opencl.reference_solvers_on_threads
+                       PROPERTIES LABELS input TIMEOUT 600 ENVIRONMENT "${HELIOSTAND_TEST_ENV}"
+                                  FAIL_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests")  # a filter that matches nothing
+endif()
