@@ -1,6 +1,7 @@
 #include "io/vtk_time_series_writer.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <vtkErrorCode.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 namespace heliostand {
@@ -42,6 +44,28 @@ std::string empty_year_vtm(const StandSnapshot& snapshot) {
 void replace_with(const fs::path& from, const fs::path& to) {
   if (fs::is_directory(to)) fs::remove_all(to);
   fs::rename(from, to);
+}
+
+// VTK's XML writers report a write that failed (a full disk, a file size limit) in their error code, not in what
+// Write() returns: it returns 1 and leaves a truncated file. The code is the system's errno where it came from a
+// failed stream, or one of vtkErrorCode's own (from FirstVTKErrorCode on).
+void check_vtk_wrote(vtkAlgorithm& writer, int write_result, const fs::path& final_vtm) {
+  const unsigned long code = writer.GetErrorCode();
+  if (write_result == 1 && code == vtkErrorCode::NoError) return;
+  if (code != vtkErrorCode::NoError && code < vtkErrorCode::FirstVTKErrorCode)
+    throw cannot_write(final_vtm, static_cast<int>(code));
+  throw OutputFolderError(fmt::format("cannot write {}: VTK: {}", final_vtm.string(),
+                                      code != vtkErrorCode::NoError ? vtkErrorCode::GetStringFromErrorCode(code)
+                                                                    : "the writer failed"));
+}
+
+// The one-year series file for a year VTK wrote no .vtm for, checked as AtomicFile::write checks its files.
+void write_empty_year(const fs::path& staged_vtm, const StandSnapshot& snapshot, const fs::path& final_vtm) {
+  errno = 0;
+  std::ofstream out(staged_vtm, std::ios::binary | std::ios::trunc);
+  out << empty_year_vtm(snapshot);
+  out.close();
+  if (!out) throw cannot_write(final_vtm, errno);
 }
 
 double megabytes(std::uintmax_t bytes) { return static_cast<double>(bytes) / 1e6; }
@@ -97,11 +121,10 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1) {
-    throw OutputFolderError(fmt::format("VTK could not write {}", staged_vtm.string()));
-  }
+  const int write_result = writer->Write();
+  check_vtk_wrote(*writer, write_result, final_vtm);
 
-  if (!fs::exists(staged_vtm)) std::ofstream(staged_vtm) << empty_year_vtm(snapshot);
+  if (!fs::exists(staged_vtm)) write_empty_year(staged_vtm, snapshot, final_vtm);
 
   const fs::path staged_pieces = staging.temporary_path() / final_pieces.filename();
   if (fs::exists(staged_pieces)) replace_with(staged_pieces, final_pieces);

@@ -2,11 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -15,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/csv_test_reader.hpp"
+#include "io/file_size_limit.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
 #include "read_text.hpp"
@@ -217,28 +215,6 @@ TEST_F(StandOutputRun, ANonEmptyFolderIsRefusedAndLeftAlone) {
   EXPECT_EQ(std::distance(fs::directory_iterator(root_), fs::directory_iterator()), 1);
 }
 
-// Files of this process can grow no further while it lives (RLIMIT_FSIZE down to one byte), as on a full disk:
-// a write past the limit fails with EFBIG, the signal it would also raise ignored. Both are restored after.
-class FileSizeLimit {
- public:
-  FileSizeLimit() : old_handler_(std::signal(SIGXFSZ, SIG_IGN)) {
-    ::getrlimit(RLIMIT_FSIZE, &old_limit_);
-    rlimit limit = old_limit_;
-    limit.rlim_cur = 1;
-    ::setrlimit(RLIMIT_FSIZE, &limit);
-  }
-  ~FileSizeLimit() {
-    ::setrlimit(RLIMIT_FSIZE, &old_limit_);
-    std::signal(SIGXFSZ, old_handler_);
-  }
-  FileSizeLimit(const FileSizeLimit&) = delete;
-  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-
- private:
-  rlimit old_limit_{};
-  void (*old_handler_)(int);
-};
-
 TEST_F(StandOutputRun, ATableThatCannotBeWrittenStopsTheRunThatYearNamingItAndTheReason) {
   std::string message;
   int failed_in_year = -1;
@@ -247,7 +223,7 @@ TEST_F(StandOutputRun, ATableThatCannotBeWrittenStopsTheRunThatYearNamingItAndTh
     out.write_stand_rows(inventory_of(stand_in_year(0).snapshot));
     out.write_year(stand_in_year(0).snapshot);
     out.write_stand_rows(inventory_of(stand_in_year(1).snapshot));
-    FileSizeLimit full_disk;
+    testing::FileSizeLimit full_disk;
     for (int year = 2; year <= 5 && failed_in_year < 0; ++year) {
       try {
         out.write_stand_rows(inventory_of(stand_in_year(year).snapshot));

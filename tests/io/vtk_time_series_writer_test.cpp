@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <string>
+#include <utility>
 
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
@@ -17,8 +21,10 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLMultiBlockDataReader.h>
 
+#include "io/file_size_limit.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
+#include "read_text.hpp"
 
 namespace heliostand {
 namespace {
@@ -265,6 +271,34 @@ TEST_F(VtkTimeSeries, AYearWithoutTreesIsStillAReadableTimeStep) {
   const auto entries = parse_pvd(folder_.path_of(VtkTimeSeriesWriter::collection_file));
   ASSERT_EQ(entries.size(), 1u);
   EXPECT_EQ(entries[0].timestep, 60.0);
+}
+
+// VTK's writers return success from a write that failed and report it only in their error code: the year must
+// still stop the run, with the .vtm's name, and leave nothing of itself behind. A limit of one byte fails the .vtm
+// itself (the system's reason); one of 3 000 bytes lets the .vtm (~830 bytes) through but not its pieces (5–7 kB).
+TEST_F(VtkTimeSeries, AYearThatCannotBeWrittenIsAnErrorAndLeavesTheSeriesAsItWas) {
+  VtkTimeSeriesWriter writer(folder_);
+  writer.write_year(testing::make_synthetic_stand(10, 0).snapshot);
+  const std::string series_before = testing::read_text(folder_.path_of(VtkTimeSeriesWriter::collection_file));
+  const std::string vtm = folder_.path_of("stand/stand_age_0011.vtm").string();
+  for (const auto& [bytes, reason] : {std::pair<rlim_t, std::string>{1, std::strerror(EFBIG)},
+                                      std::pair<rlim_t, std::string>{3000, "VTK: OutOfDiskSpaceError"}}) {
+    std::string message;
+    {
+      testing::FileSizeLimit full_disk(bytes);
+      try {
+        writer.write_year(testing::make_synthetic_stand(11, 1).snapshot);
+      } catch (const OutputFolderError& e) {
+        message = e.what();
+      }
+    }
+    EXPECT_EQ(message, "cannot write " + vtm + ": " + reason) << "files limited to " << bytes << " bytes";
+    EXPECT_FALSE(fs::exists(vtm));
+    EXPECT_FALSE(fs::exists(folder_.path_of("stand/stand_age_0011")));
+    EXPECT_EQ(testing::read_text(folder_.path_of(VtkTimeSeriesWriter::collection_file)), series_before);
+    for (const auto& entry : fs::recursive_directory_iterator(folder_.root()))
+      EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+  }
 }
 
 }  // namespace
