@@ -13,10 +13,12 @@ void add_kanamaru_command(CLI::App& app, int& status) {
   auto scenario = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   command->add_option("scenario", *scenario, "Scenario TOML file with a [model] table")->required();
-  command->add_option("-o,--out", *out, "Output folder")->required();
-  command->callback([scenario, out, &status] {
+  auto force = std::make_shared<bool>(false);
+  command->add_option("-o,--out", *out, "Output folder (new or empty)")->required();
+  command->add_flag("--force", *force, "Replace an earlier heliostand output in the folder");
+  command->callback([scenario, out, force, &status] {
     status = report_errors([&] {
-      const KanamaruRunSummary summary = run_kanamaru(load_kanamaru_scenario(*scenario), *out);
+      const KanamaruRunSummary summary = run_kanamaru(load_kanamaru_scenario(*scenario), *out, *force);
       spdlog::info("{} generations: {} living tips, {} living branches; {:.1f} s -> {}", summary.generations,
                    summary.tips, summary.living_branches, summary.seconds, *out);
       return 0;

@@ -9,8 +9,9 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <vtkErrorCode.h>
 #include <vtkXMLMultiBlockDataWriter.h>
+
+#include "io/vtk_write_check.hpp"
 
 namespace heliostand {
 namespace fs = std::filesystem;
@@ -44,19 +45,6 @@ std::string empty_year_vtm(const StandSnapshot& snapshot) {
 void replace_with(const fs::path& from, const fs::path& to) {
   if (fs::is_directory(to)) fs::remove_all(to);
   fs::rename(from, to);
-}
-
-// VTK's XML writers report a write that failed (a full disk, a file size limit) in their error code, not in what
-// Write() returns: it returns 1 and leaves a truncated file. The code is the system's errno where it came from a
-// failed stream, or one of vtkErrorCode's own (from FirstVTKErrorCode on).
-void check_vtk_wrote(vtkAlgorithm& writer, int write_result, const fs::path& final_vtm) {
-  const unsigned long code = writer.GetErrorCode();
-  if (write_result == 1 && code == vtkErrorCode::NoError) return;
-  if (code != vtkErrorCode::NoError && code < vtkErrorCode::FirstVTKErrorCode)
-    throw cannot_write(final_vtm, static_cast<int>(code));
-  throw OutputFolderError(fmt::format("cannot write {}: VTK: {}", final_vtm.string(),
-                                      code != vtkErrorCode::NoError ? vtkErrorCode::GetStringFromErrorCode(code)
-                                                                    : "the writer failed"));
 }
 
 // The one-year series file for a year VTK wrote no .vtm for, checked as AtomicFile::write checks its files.

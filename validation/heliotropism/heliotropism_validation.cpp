@@ -608,13 +608,17 @@ int main(int argc, char** argv) {
   if (argc == 4 && std::strcmp(argv[1], "run") == 0) {
     try {
       const KanamaruScenario scenario = load_kanamaru_scenario(argv[2]);
-      const KanamaruRunSummary s = run_kanamaru(scenario, argv[3]);
+      // The CTest reruns it into the same build folder: replace the earlier run there (never another folder).
+      const KanamaruRunSummary s = run_kanamaru(scenario, argv[3], /*force=*/true);
       std::cout << fmt::format("{}: {} generations, {} living tips, {} living branches, {:.1f} s -> {}\n", argv[2],
                                s.generations, s.tips, s.living_branches, s.seconds, argv[3]);
       return 0;
     } catch (const InputError& e) {
       for (const auto& problem : e.problems()) std::cerr << problem.format(e.field_kind()) << "\n";
       return 2;
+    } catch (const std::exception& e) {  // an output folder refused or a file that could not be written
+      std::cerr << "error: " << e.what() << "\n";
+      return 1;
     }
   }
   std::cerr << "usage: heliotropism_validation validate OUT_DIR [--full] [--only 5,6,10] [--seeds N] | run SCENARIO.toml OUT_DIR\n";

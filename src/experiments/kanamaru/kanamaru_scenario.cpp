@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -12,6 +12,7 @@
 #include "geometry/angles.hpp"
 #include "io/csv_writer.hpp"
 #include "io/dichotomy_tree_vtk.hpp"
+#include "io/output_folder.hpp"
 #include "io/pvd_collection.hpp"
 #include "rng/random_stream.hpp"
 #include "scenario/toml_table_reader.hpp"
@@ -111,15 +112,16 @@ std::vector<BudStart> starts_of(const KanamaruScenario& s) {
   return all;
 }
 
-KanamaruRunSummary run_kanamaru(const KanamaruScenario& s, const std::filesystem::path& out) {
+KanamaruRunSummary run_kanamaru(const KanamaruScenario& s, const std::filesystem::path& out, bool force) {
   const auto started = std::chrono::steady_clock::now();
-  std::filesystem::create_directories(out);
+  OutputFolder folder(out, force);  // a new or empty folder, or with `force` an earlier heliostand output
   DichotomyTree tree(starts_of(s), s.parameters.branching_angle_deg, s.seed);
   KanamaruGrowth growth(s.parameters, s.seed);
   PvdCollection pvd;
   auto snapshot = [&](const DichotomyTree& t) {
     const std::string name = fmt::format("crown_gen_{:04d}.vtp", t.generation());
-    write_crown_vtp(t, s.parameters.leaf_ball_radius, out / name);
+    write_crown_vtp(t, s.parameters.leaf_ball_radius, folder.path_of(name));
+    folder.record_output(name);
     pvd.add(t.generation(), name);
   };
   snapshot(tree);
@@ -127,16 +129,17 @@ KanamaruRunSummary run_kanamaru(const KanamaruScenario& s, const std::filesystem
     if (t.generation() == s.remove_left_after) tree.remove_group(0);
     if (t.generation() % s.output_interval == 0 || t.generation() == s.parameters.generations) snapshot(t);
   });
-  std::ofstream(out / "crown.pvd") << pvd.to_xml();
+  folder.write_file("crown.pvd", pvd.to_xml());
 
-  std::ofstream generations(out / "generations.csv");
+  std::ostringstream generations;
   CsvWriter g(generations);
   g.header({"generation", "added", "survived", "mean_light"});
   for (const auto& record : growth.history())
     g.integer(record.generation).integer(record.added).integer(record.survived).number(record.mean_light, 4).end_row();
+  folder.write_file("generations.csv", generations.str());
 
-  std::ofstream tips_file(out / "tips.csv");
-  CsvWriter t(tips_file);
+  std::ostringstream tips;
+  CsvWriter t(tips);
   t.header({"group", "x", "y", "z", "dx", "dy", "dz"});
   for (int i : tree.tips()) {
     const auto& b = tree.branches()[i];
@@ -144,6 +147,7 @@ KanamaruRunSummary run_kanamaru(const KanamaruScenario& s, const std::filesystem
     t.integer(b.group).number(b.tip.x, 4).number(b.tip.y, 4).number(b.tip.z, 4);
     t.number(d.x, 4).number(d.y, 4).number(d.z, 4).end_row();
   }
+  folder.write_file("tips.csv", tips.str());
   KanamaruRunSummary summary;
   summary.generations = tree.generation();
   summary.tips = static_cast<int>(tree.tips().size());

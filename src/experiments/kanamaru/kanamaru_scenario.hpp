@@ -43,8 +43,10 @@ struct KanamaruRunSummary {
 };
 
 // Grows the scenario and writes to `out`: generations.csv (one row per generation), tips.csv (final living
-// tips), crown_gen_NNNN.vtp (io/dichotomy_tree_vtk.hpp) and
-// crown.pvd. The folder is created; existing files of these names are replaced.
-KanamaruRunSummary run_kanamaru(const KanamaruScenario& scenario, const std::filesystem::path& out);
+// tips), crown_gen_NNNN.vtp (io/dichotomy_tree_vtk.hpp) and crown.pvd. `out` is taken as `grow` takes its folder
+// (io/output_folder.hpp): created if missing, refused if it holds anything unless `force` and it holds an earlier
+// heliostand output, whose contents are then replaced. Every file is written whole under a temporary name and
+// renamed into place; one that cannot be written throws OutputFolderError naming it and the reason.
+KanamaruRunSummary run_kanamaru(const KanamaruScenario& scenario, const std::filesystem::path& out, bool force);
 
 }  // namespace heliostand
