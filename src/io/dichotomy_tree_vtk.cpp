@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
 #include <vtkCellArray.h>
@@ -14,6 +13,9 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include "io/output_folder.hpp"
+#include "io/vtk_write_check.hpp"
 
 namespace heliostand {
 
@@ -33,11 +35,16 @@ std::vector<int> tips_carried(const DichotomyTree& tree) {
   return carried;
 }
 
+// Under a temporary name, renamed into place once VTK has written it whole (io/vtk_write_check.hpp): a crown that
+// cannot be written is an error naming it, never a truncated file under its name.
 void write_polydata(vtkPolyData* data, const std::filesystem::path& path) {
+  AtomicFile file(path);
   vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(path.string().c_str());
+  writer->SetFileName(file.temporary_path().string().c_str());
   writer->SetInputData(data);
-  if (writer->Write() != 1) throw std::runtime_error("cannot write " + path.string());
+  const int write_result = writer->Write();
+  check_vtk_wrote(*writer, write_result, path);
+  file.commit();
 }
 
 }  // namespace
