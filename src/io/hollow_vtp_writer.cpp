@@ -1,7 +1,5 @@
 #include "io/hollow_vtp_writer.hpp"
 
-#include <stdexcept>
-
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
@@ -12,6 +10,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include "io/vtk_named_array.hpp"
+#include "io/vtk_write_check.hpp"
 
 namespace heliostand::hollow {
 
@@ -47,7 +46,8 @@ void write_vtp(const HollowMesh& mesh, const std::string& path) {
   writer->SetInputData(poly);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
-  if (writer->Write() != 1) throw std::runtime_error("could not write " + path);
+  const int write_result = writer->Write();
+  check_vtk_wrote(*writer, write_result, path);
 }
 
 }  // namespace heliostand::hollow
