@@ -289,6 +289,34 @@ static void expect_refused_before_output(const std::string& folder_name, const s
   EXPECT_FALSE(fs::exists(folder));
 }
 
+// Files may not grow past 4 KiB (the shell's `ulimit -f 4`, its SIGXFSZ ignored), as on a full disk: the first
+// table to reach it stops the run that year, with its name and the system's reason; that table is not left under
+// its name, the others are, and there is no run.json. (Before, the run went on to its last year and failed at the
+// rename with "cannot write OUT/.trees.csv.tmp" and no reason, losing the tables after the failed one.)
+TEST(GrowCli, ATableThatCannotBeWrittenStopsTheRunNamingItAndTheReason) {
+  const auto folder = scratch_folder("tiny_full_disk");
+  const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 4; exec " + std::string(HELIOSTAND_EXECUTABLE) +
+                               " -q grow " + tiny + " --device reference --no-vtk --out " + folder.string() + "\"");
+  EXPECT_EQ(run.status, 2) << run.output;
+  std::set<std::string> tables{"stand_table.csv", "trees.csv", "events.csv"};
+  std::string failed;
+  for (const std::string& table : tables) {
+    if (run.output.find("error: cannot write " + (folder / table).string() + ": File too large") != std::string::npos)
+      failed = table;
+  }
+  ASSERT_NE(failed, "") << run.output;
+  std::set<std::string> left;
+  for (const auto& entry : fs::directory_iterator(folder)) left.insert(entry.path().filename().string());
+  tables.erase(failed);
+  tables.insert(".heliostand-output");
+  EXPECT_EQ(left, tables) << "the tables but " << failed << ", and nothing else";
+  if (failed != "stand_table.csv") {  // the run stopped in the year it failed, before the tiny stand's last (age 25)
+    const auto rows = parse_csv(read_text(folder / "stand_table.csv"));
+    ASSERT_GT(rows.size(), 1u);
+    EXPECT_LT(std::stoi(rows.back()[0]), 25) << "the run went on after its table failed";
+  }
+}
+
 TEST(GrowCli, YearsShorterThanAThinningIsBadInput) {
   expect_refused_before_output("tiny_too_short", "--years 2", "run.years");
 }
