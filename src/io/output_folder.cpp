@@ -37,15 +37,17 @@ AtomicFile::~AtomicFile() {
   fs::remove_all(temporary_, ignored);
 }
 
-void AtomicFile::write(std::string_view contents) const {
+void write_whole_file(const fs::path& path, std::string_view contents, const fs::path& final_path) {
   // errno is read only where the stream failed, and cleared first: a failure that sets none (a short write the
   // library noticed itself) must not be reported with the reason of some earlier, unrelated call ("Success").
   errno = 0;
-  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
   out.close();
-  if (!out) throw cannot_write(final_, errno);
+  if (!out) throw cannot_write(final_path, errno);
 }
+
+void AtomicFile::write(std::string_view contents) const { write_whole_file(temporary_, contents, final_); }
 
 void AtomicFile::commit() {
   if (committed_) return;

@@ -25,6 +25,11 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& final_path)
 // library noticed a short write itself and the system gave no reason).
 OutputFolderError cannot_write(const std::filesystem::path& final_path, int reason);
 
+// Writes `contents` as the whole file `path`, or throws cannot_write(`final_path`, ...): `path` is where the bytes go
+// (a temporary), `final_path` the name the user will know the file by.
+void write_whole_file(const std::filesystem::path& path, std::string_view contents,
+                      const std::filesystem::path& final_path);
+
 // A file under its temporary name until commit() renames it into place. If never committed (an
 // exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
 class AtomicFile {

@@ -1,7 +1,6 @@
 #include "io/vtk_time_series_writer.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -45,15 +44,6 @@ std::string empty_year_vtm(const StandSnapshot& snapshot) {
 void replace_with(const fs::path& from, const fs::path& to) {
   if (fs::is_directory(to)) fs::remove_all(to);
   fs::rename(from, to);
-}
-
-// The one-year series file for a year VTK wrote no .vtm for, checked as AtomicFile::write checks its files.
-void write_empty_year(const fs::path& staged_vtm, const StandSnapshot& snapshot, const fs::path& final_vtm) {
-  errno = 0;
-  std::ofstream out(staged_vtm, std::ios::binary | std::ios::trunc);
-  out << empty_year_vtm(snapshot);
-  out.close();
-  if (!out) throw cannot_write(final_vtm, errno);
 }
 
 double megabytes(std::uintmax_t bytes) { return static_cast<double>(bytes) / 1e6; }
@@ -112,7 +102,7 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
   const int write_result = writer->Write();
   check_vtk_wrote(*writer, write_result, final_vtm);
 
-  if (!fs::exists(staged_vtm)) write_empty_year(staged_vtm, snapshot, final_vtm);
+  if (!fs::exists(staged_vtm)) write_whole_file(staged_vtm, empty_year_vtm(snapshot), final_vtm);
 
   const fs::path staged_pieces = staging.temporary_path() / final_pieces.filename();
   if (fs::exists(staged_pieces)) replace_with(staged_pieces, final_pieces);
