@@ -42,8 +42,7 @@ void write_polydata(vtkPolyData* data, const std::filesystem::path& path) {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(file.temporary_path().string().c_str());
   writer->SetInputData(data);
-  const int write_result = writer->Write();
-  check_vtk_wrote(*writer, write_result, path);
+  write_checked(*writer, path);
   file.commit();
 }
 

@@ -46,8 +46,7 @@ void write_vtp(const HollowMesh& mesh, const std::string& path) {
   writer->SetInputData(poly);
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
-  const int write_result = writer->Write();
-  check_vtk_wrote(*writer, write_result, path);
+  write_checked(*writer, path);
 }
 
 }  // namespace heliostand::hollow

@@ -99,8 +99,7 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
-  const int write_result = writer->Write();
-  check_vtk_wrote(*writer, write_result, final_vtm);
+  write_checked(*writer, final_vtm);
 
   if (!fs::exists(staged_vtm)) write_whole_file(staged_vtm, empty_year_vtm(snapshot), final_vtm);
 

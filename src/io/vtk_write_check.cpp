@@ -1,14 +1,15 @@
 #include "io/vtk_write_check.hpp"
 
 #include <fmt/format.h>
-#include <vtkAlgorithm.h>
 #include <vtkErrorCode.h>
+#include <vtkXMLWriterBase.h>
 
 #include "io/output_folder.hpp"
 
 namespace heliostand {
 
-void check_vtk_wrote(vtkAlgorithm& writer, int write_result, const std::filesystem::path& final_path) {
+void write_checked(vtkXMLWriterBase& writer, const std::filesystem::path& final_path) {
+  const int write_result = writer.Write();
   const unsigned long code = writer.GetErrorCode();
   if (write_result == 1 && code == vtkErrorCode::NoError) return;
   if (code != vtkErrorCode::NoError && code < vtkErrorCode::FirstVTKErrorCode)

@@ -4,13 +4,15 @@
 // of ours reads that code through this check.
 #include <filesystem>
 
-class vtkAlgorithm;
+class vtkXMLWriterBase;
 
 namespace heliostand {
 
-// Throws OutputFolderError "cannot write FINAL_PATH: REASON" unless `write_result` (what Write() returned) is 1 and
-// the writer's error code is clear. REASON is the system's, where the code is an errno value (a failed stream),
-// or "VTK: " and the name of vtkErrorCode's own code (OutOfDiskSpaceError where a piece failed).
-void check_vtk_wrote(vtkAlgorithm& writer, int write_result, const std::filesystem::path& final_path);
+// Runs the writer (its file name and input already set) and throws OutputFolderError "cannot write FINAL_PATH:
+// REASON" unless Write() returned 1 and the writer's error code is clear. REASON is the system's, where the code
+// is an errno value (a failed stream), or "VTK: " and the name of vtkErrorCode's own code (OutOfDiskSpaceError
+// where a piece failed). FINAL_PATH is the name the user will know the file by, which may differ from the
+// writer's (a temporary).
+void write_checked(vtkXMLWriterBase& writer, const std::filesystem::path& final_path);
 
 }  // namespace heliostand
