@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -42,6 +43,13 @@ inline std::filesystem::path scratch_folder(const std::string& name) {
   std::filesystem::remove_all(path);
   std::filesystem::create_directories(path.parent_path());
   return path;
+}
+
+// The names of what a folder holds (files and folders, hidden ones too), not recursing.
+inline std::set<std::string> names_in(const std::filesystem::path& folder) {
+  std::set<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.insert(entry.path().filename().string());
+  return names;
 }
 
 }  // namespace heliostand::testing

@@ -20,12 +20,6 @@ CliResult kanamaru(const fs::path& folder, const std::string& extra = "") {
   return run_cli("kanamaru " + kanamaru_ci + " --out " + folder.string() + " " + extra);
 }
 
-std::set<std::string> files_in(const fs::path& folder) {
-  std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder)) names.insert(entry.path().filename().string());
-  return names;
-}
-
 TEST(KanamaruCli, WritesItsSeriesIntoANewFolderAndReplacesItOnlyWithForce) {
   const auto folder = scratch_folder("kanamaru_ci");
   const auto first = kanamaru(folder);
@@ -33,7 +27,7 @@ TEST(KanamaruCli, WritesItsSeriesIntoANewFolderAndReplacesItOnlyWithForce) {
   const std::set<std::string> expected{".heliostand-output", "crown.pvd",       "crown_gen_0000.vtp",
                                        "crown_gen_0006.vtp", "crown_gen_0012.vtp", "generations.csv",
                                        "tips.csv"};
-  EXPECT_EQ(files_in(folder), expected);
+  EXPECT_EQ(names_in(folder), expected);
   const std::string tips = read_text(folder / "tips.csv");
 
   const auto again = kanamaru(folder);
@@ -43,7 +37,7 @@ TEST(KanamaruCli, WritesItsSeriesIntoANewFolderAndReplacesItOnlyWithForce) {
 
   const auto forced = kanamaru(folder, "--force");
   EXPECT_EQ(forced.status, 0) << forced.output;
-  EXPECT_EQ(files_in(folder), expected);
+  EXPECT_EQ(names_in(folder), expected);
   EXPECT_EQ(read_text(folder / "tips.csv"), tips) << "the same seed grows the same tree";
 }
 
@@ -55,7 +49,7 @@ TEST(KanamaruCli, AFolderHoldingSomethingElseIsRefusedEvenWithForceAndLeftAlone)
     const auto run = kanamaru(folder, extra);
     EXPECT_EQ(run.status, 2) << extra << ": " << run.output;
     EXPECT_EQ(read_text(folder / "tips.csv"), "my own tips\n");
-    EXPECT_EQ(files_in(folder), std::set<std::string>{"tips.csv"});
+    EXPECT_EQ(names_in(folder), std::set<std::string>{"tips.csv"});
   }
 }
 
@@ -69,7 +63,7 @@ TEST(KanamaruCli, ACrownThatCannotBeWrittenIsAnErrorAndNothingIsLeftHalfWritten)
   EXPECT_NE(run.output.find("error: cannot write " + (folder / "crown_gen_0000.vtp").string() + ": "),
             std::string::npos)
       << run.output;
-  EXPECT_EQ(files_in(folder), std::set<std::string>{".heliostand-output"}) << "no crown, no temporary";
+  EXPECT_EQ(names_in(folder), std::set<std::string>{".heliostand-output"}) << "no crown, no temporary";
 }
 
 }  // namespace
