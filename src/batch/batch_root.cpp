@@ -63,9 +63,9 @@ void take_root(const fs::path& root, bool force) {
       for (const fs::directory_entry& entry : fs::directory_iterator(root)) fs::remove_all(entry.path());
     }
   }
-  std::ofstream marker(root / batch_marker_name);
-  marker << "This folder holds a heliostand batch; `heliostand batch --force` may delete its contents.\n";
-  if (!marker) throw OutputFolderError(fmt::format("cannot write into output folder {}", root.string()));
+  const fs::path marker = root / batch_marker_name;  // written whole and checked at its close, as a run's marker
+  write_whole_file(marker, "This folder holds a heliostand batch; `heliostand batch --force` may delete its contents.\n",
+                   marker);
 }
 
 void write_composed_scenario(const fs::path& root, const BatchRun& run) {

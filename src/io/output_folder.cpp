@@ -101,9 +101,10 @@ OutputFolder::OutputFolder(fs::path root, bool force, bool resume) : root_(std::
       throw OutputFolderError(fmt::format("cannot create output folder {}: {}", root_.string(), error.message()));
     }
   }
-  std::ofstream marker(root_ / marker_name);
-  marker << "This folder holds the output of a heliostand run; `--force` may delete its contents.\n";
-  if (!marker) throw OutputFolderError(fmt::format("cannot write into output folder {}", root_.string()));
+  // Written whole and checked at its close: a buffered stream checked only after `<<` misses a full disk.
+  const fs::path marker = root_ / marker_name;
+  write_whole_file(marker, "This folder holds the output of a heliostand run; `--force` may delete its contents.\n",
+                   marker);
 }
 
 void OutputFolder::take_over_for_resume() {

@@ -2,12 +2,15 @@
 // and the output root's refusals: nothing written outside it, nothing of another folder overwritten.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 #include "batch/batch_manifest.hpp"
 #include "batch/batch_root.hpp"
 #include "batch/batch_run.hpp"
 #include "core/input_error.hpp"
+#include "io/file_size_limit.hpp"
 #include "io/output_folder.hpp"
 #include "io/temp_folder.hpp"
 
@@ -125,6 +128,19 @@ TEST(BatchRoot, ABatchOfAnotherManifestIsRefusedUnlessForced) {
   EXPECT_THROW(prepare_batch_root(root, {{"a", "as-is", 1, "[run]\nyears = 2\n"}}, false), OutputFolderError);
   EXPECT_NO_THROW(prepare_batch_root(root, {{"a", "as-is", 1, "[run]\nyears = 1\n"}}, false));  // the same: taken again
   EXPECT_NO_THROW(prepare_batch_root(root, {{"a", "as-is", 1, "[run]\nyears = 2\n"}}, true));
+}
+
+TEST(BatchRoot, AMarkerThatCannotBeWrittenIsAnErrorNamingItAndTheReason) {
+  TempFolder folder("batch-root");
+  const fs::path root = folder.path() / "root";
+  try {
+    testing::FileSizeLimit full_disk;
+    prepare_batch_root(root, {}, false);
+    FAIL() << "a batch marker that could not be written was accepted";
+  } catch (const OutputFolderError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write " + (root / batch_marker_name).string() + ": " + std::strerror(EFBIG));
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/file_size_limit.hpp"
 #include "io/temp_folder.hpp"
 #include "read_text.hpp"
 
@@ -66,6 +67,20 @@ TEST(OutputFolder, RefusesAFileInPlaceOfTheFolder) {
   testing::TempFolder tmp("output_folder_file");
   std::ofstream(tmp.path() / "out") << "x";
   EXPECT_THROW(OutputFolder(tmp.path() / "out", true), OutputFolderError);
+}
+
+TEST(OutputFolder, AMarkerThatCannotBeWrittenIsAnErrorNamingItAndTheReason) {
+  // The marker is the folder's first file: on a full disk the run must stop there with the system's reason, not
+  // start with a marker whose write failed unseen in a stream's buffer.
+  testing::TempFolder tmp("output_folder_full_disk");
+  const fs::path marker = tmp.path() / OutputFolder::marker_name;
+  try {
+    testing::FileSizeLimit full_disk;
+    OutputFolder folder(tmp.path(), false);
+    FAIL() << "a marker that could not be written was accepted";
+  } catch (const OutputFolderError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write " + marker.string() + ": " + std::strerror(EFBIG));
+  }
 }
 
 TEST(OutputFolder, WriteFileLeavesOnlyTheFinalFileAndRecordsIt) {
