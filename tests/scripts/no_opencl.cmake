@@ -28,5 +28,6 @@ if(HELIOSTAND_SANITIZE)
            COMMAND heliostand_tests "--gtest_filter=*ReferenceLightSolverThreads.*:ReferenceRootFieldThreads.*")
   set_tests_properties(unit.no_opencl.device_choice_and_refusals unit.no_opencl.reference_solvers_on_threads
                        PROPERTIES LABELS input TIMEOUT 600 ENVIRONMENT "${HELIOSTAND_TEST_ENV}"
+                                  ENVIRONMENT_MODIFICATION "${HELIOSTAND_LSAN_SUPPRESSIONS}"
                                   FAIL_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests")  # a filter that matches nothing
 endif()
