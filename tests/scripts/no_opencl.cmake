@@ -18,8 +18,8 @@ set_tests_properties(cli.no_opencl.device_opencl_refused cli.no_opencl.auto_grow
 # In the sanitizer tree (CI's build without OpenCL), the unit tests whose answer depends on the build having no
 # OpenCL backend, and the oracles on the worker threads, run under ASan/UBSan from the one test program: the device
 # choice and the commands that refuse OpenCL work (fast), and the reference light and root-contact solvers giving
-# the same answer on any number of threads (about 50 s there). The whole unit suite under the sanitizers takes over
-# 30 minutes on 2 cores; a plain build without OpenCL runs all of it (`ctest -L unit`). Label "input", the label
+# the same answer on any number of threads (about 50 s there). The whole unit suite under the sanitizers takes 22
+# minutes on 2 cores, too long for CI; it runs there with `ctest -L unit` (README). Label "input", the label
 # that tree's CI run selects; CI builds heliostand_tests there for them.
 if(HELIOSTAND_SANITIZE)
   add_test(NAME unit.no_opencl.device_choice_and_refusals
