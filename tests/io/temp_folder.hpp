@@ -1,7 +1,10 @@
 #pragma once
 // A fresh, empty folder under the build tree for one test, removed afterwards. The folder name carries
-// the running test's name, so tests sharing a fixture can run in parallel (ctest -j) without racing.
+// the running test's name, so tests sharing a fixture can run in parallel (ctest -j) without racing, and the
+// process's id, so the same test run by two programs at once (the sanitizer tree's input tests and its unit-suite
+// shards, tests/scripts/no_opencl.cmake) does not race either.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -11,7 +14,8 @@ namespace heliostand::testing {
 class TempFolder {
  public:
   explicit TempFolder(const std::string& name)
-      : path_(std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / (name + "." + running_test())) {
+      : path_(std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" /
+              (name + "." + running_test() + "." + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

@@ -1,8 +1,11 @@
 # The mutation harness (validation/mutations/run.sh, on demand: ~20 minutes) applies each documented break as a
 # patch. A change to the code a patch touches would leave the break unappliable and the harness unable to prove
 # anything, so every patch must still apply to the committed sources (git apply --check, no change made). Skipped
-# (exit 77) where the sources are not a git checkout.
-file(GLOB HELIOSTAND_MUTATION_PATCHES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/validation/mutations/*.patch)
+# (exit 77) where the sources are not a git checkout. The same holds for the break that proves the sanitizer tree's
+# unit-suite shards can fail (tests/sanitizers/one_past_the_end.patch: caught there, not in a Release tree, so it is
+# applied by hand, not by the harness; docs/performance.md "Most of the unit suite under the sanitizers in CI").
+file(GLOB HELIOSTAND_MUTATION_PATCHES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/validation/mutations/*.patch
+     ${PROJECT_SOURCE_DIR}/tests/sanitizers/*.patch)
 foreach(patch ${HELIOSTAND_MUTATION_PATCHES})
   get_filename_component(name ${patch} NAME_WE)
   add_test(NAME validation.mutations.applies.${name}
