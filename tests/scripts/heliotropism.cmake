@@ -45,6 +45,15 @@ add_test(NAME validation.heliotropism.bad_scenario
                  -P ${HELIOSTAND_EXPECT}
                  $<TARGET_FILE:heliotropism_validation> run ${PROJECT_SOURCE_DIR}/stands/kanamaru-bad/scenario.toml
                  ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-bad)
+# A findings report that cannot be written (here a folder stands where heliotropism_metrics.md goes) is an error,
+# exit status 2 naming the file and the reason, whatever the findings: one quick figure at one seed.
+set(HELIOSTAND_UNWRITABLE_FINDINGS ${PROJECT_BINARY_DIR}/validation/heliotropism-unwritable)
+add_test(NAME validation.heliotropism.unwritable_report
+         COMMAND sh -c "mkdir -p \"$1/heliotropism_metrics.md\" && shift && exec \"$@\"" sh ${HELIOSTAND_UNWRITABLE_FINDINGS}
+                 ${CMAKE_COMMAND} -DEXPECT_EXIT=2
+                 "-DEXPECT_OUTPUT=cannot write [^ ]*/heliotropism_metrics.md: Is a directory" -P ${HELIOSTAND_EXPECT}
+                 $<TARGET_FILE:heliotropism_validation> validate ${HELIOSTAND_UNWRITABLE_FINDINGS} --only 10 --seeds 1)
+set_tests_properties(validation.heliotropism.unwritable_report PROPERTIES TIMEOUT 300 LABELS "validation")
 # Figs. 16-17 on the conifer (validation/heliotropism/conifer_findings_validation.cpp; GoogleTest, each TEST a CTest).
 add_executable(heliostand_conifer_findings ${PROJECT_SOURCE_DIR}/validation/heliotropism/conifer_findings_validation.cpp)
 target_include_directories(heliostand_conifer_findings PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)

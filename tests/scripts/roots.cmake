@@ -19,3 +19,10 @@ add_custom_target(roots_depth_report
   COMMAND heliostand_roots_depth_report ${PROJECT_BINARY_DIR}/validation/roots_depth_profile.md
   COMMENT "Rooting-depth profile vs Jackson et al. (1996) -> ${PROJECT_BINARY_DIR}/validation/roots_depth_profile.md"
   VERBATIM)
+# A report that cannot be written is an error (exit status 2, naming the file and the reason), never a silent 0:
+# /dev/full takes the open and refuses the bytes, so only a write checked at its close sees it.
+add_test(NAME validation.roots.depth_report_unwritable
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=cannot write /dev/full: No space left on device"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 $<TARGET_FILE:heliostand_roots_depth_report> /dev/full)
+set_tests_properties(validation.roots.depth_report_unwritable PROPERTIES TIMEOUT 120 LABELS "validation")

@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -30,6 +29,7 @@
 #include "crown_shape.hpp"
 #include "experiments/kanamaru/kanamaru_scenario.hpp"
 #include "io/dichotomy_tree_vtk.hpp"
+#include "io/output_folder.hpp"
 
 using namespace heliostand;
 
@@ -153,7 +153,8 @@ class Gallery {
     index_ << fmt::format("{},\"{}\",\"{}\",{}.vtp,{}_tips.vtp\n", sweep, title, label, stem, stem);
   }
   void write_index() const {
-    std::ofstream(dir_ / "index.csv") << "sweep,title,label,branches,tips\n" << index_.str();
+    const std::filesystem::path index = dir_ / "index.csv";
+    write_whole_file(index, "sweep,title,label,branches,tips\n" + index_.str(), index);
   }
 
  private:
@@ -568,7 +569,7 @@ int validate(const std::string& out, bool full, const std::string& only, int see
     std::cerr << "  (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
   }
   gallery.write_index();
-  std::ofstream md(std::filesystem::path(out) / "heliotropism_metrics.md");
+  std::ostringstream md;
   md << "# Seed 000 findings (heliotropism validation)\n\n"
      << fmt::format("Sizes: {} seeds, {} generations (Table 1: 40; Fig. 10's I sweep {}), sky {} x {}, Fig. 11 cut after {} grown to {}, "
                     "Fig. 5 {} generations with sprouting 1..{}; Fig. 12's outline at {} generations, {} seeds; Fig. 6 {} generations with sprouting 1..{}; transmittance t = {:g}. Lengths in branch lengths.\n\n",
@@ -583,6 +584,8 @@ int validate(const std::string& out, bool full, const std::string& only, int see
         "(centres closer than 2R); tip-up = drooping tips whose branch points above the horizontal, as a fraction "
         "of the drooping ones; evenness = Clark-Evans index of the tips in top view (1 random, > 1 even); width / "
         "crown depth = the outline without the bare stem.\n";
+  const std::filesystem::path metrics = std::filesystem::path(out) / "heliotropism_metrics.md";
+  write_whole_file(metrics, md.str(), metrics);  // checked: a report that could not be written is an error
   std::cerr << report.failures << " finding(s) failed; table in " << out << "/heliotropism_metrics.md\n";
   return report.failures == 0 ? 0 : 1;
 }
@@ -603,7 +606,12 @@ int main(int argc, char** argv) {
         return 2;
       }
     }
-    return validate(argv[2], full, only, seeds);
+    try {
+      return validate(argv[2], full, only, seeds);
+    } catch (const std::exception& e) {  // e.g. a report or tree file that could not be written: never a silent 0
+      std::cerr << "error: " << e.what() << "\n";
+      return 2;
+    }
   }
   if (argc == 4 && std::strcmp(argv[1], "run") == 0) {
     try {

@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -37,6 +36,7 @@
 #include <vector>
 
 #include "cli/seed_option.hpp"
+#include "io/output_folder.hpp"
 #include "rng/random_stream.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
@@ -220,18 +220,20 @@ Finding gap_regrowth(const fs::path& source, const fs::path& out, FindingRun set
 // uniformly in ±30 % of 4.5 m so that some trees are overtopped from the start.
 fs::path write_dense_plantation(const fs::path& folder) {
   fs::create_directories(folder);
-  std::ofstream survey(folder / "survey.csv");
-  survey << "id,x,y,height\n";
+  std::string survey = "id,x,y,height\n";
   RandomStream random(11, {0x44454E53});  // "DENS"
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j)
-      survey << fmt::format("D{:02d},{:.2f},{:.2f},{:.2f}\n", 8 * i + j + 1, 0.75 + 1.5 * i, 0.75 + 1.5 * j,
+      survey += fmt::format("D{:02d},{:.2f},{:.2f},{:.2f}\n", 8 * i + j + 1, 0.75 + 1.5 * i, 0.75 + 1.5 * j,
                             4.5 * random.uniform(0.7, 1.3));
-  std::ofstream(folder / "scenario.toml") << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 12\n"
-                                             "x_min = 0\ny_min = 0\nx_max = 12\ny_max = 12\n"
-                                             "[run]\nyears = 10\nseed = 3\noutput_interval = 2\n"
-                                             "[light]\nperiodic = true\n"
-                                             "[roots]\nenabled = false\n";
+  write_whole_file(folder / "survey.csv", survey, folder / "survey.csv");
+  write_whole_file(folder / "scenario.toml",
+                   "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 12\n"
+                   "x_min = 0\ny_min = 0\nx_max = 12\ny_max = 12\n"
+                   "[run]\nyears = 10\nseed = 3\noutput_interval = 2\n"
+                   "[light]\nperiodic = true\n"
+                   "[roots]\nenabled = false\n",
+                   folder / "scenario.toml");
   return folder / "scenario.toml";
 }
 
@@ -267,6 +269,28 @@ Finding self_thinning(const fs::path& out, FindingRun settings, std::string& rep
   return finding;
 }
 
+// Both findings, their report written to OUT_DIR/stand_light.md; exit status 1 when one fails.
+int run_findings(const fs::path& out, const FindingRun& settings) {
+  fs::create_directories(out);
+  std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
+                       "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
+                       fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edge(s) beyond it, seed {}.\n\n",
+                                   settings.cutoff_m, settings.far_field_cell_m, settings.hand_over_cells,
+                                   settings.seed ? std::to_string(*settings.seed)
+                                                 : "the gap's own and 2, 3, 4, the dense stand's own");
+  std::vector<Finding> findings;
+  findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, settings, report));
+  findings.push_back(self_thinning(out, settings, report));
+  write_whole_file(out / "stand_light.md", report, out / "stand_light.md");
+  int failed = 0;
+  for (const Finding& f : findings) {
+    std::cout << (f.holds ? "holds: " : "FAILS: ") << f.text << "\n";
+    failed += !f.holds;
+  }
+  std::cout << "report: " << (out / "stand_light.md").string() << "\n";
+  return failed ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -292,22 +316,10 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   spdlog::set_level(spdlog::level::warn);
-  fs::create_directories(out);
-  std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
-                       "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
-                       fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edge(s) beyond it, seed {}.\n\n",
-                                   settings.cutoff_m, settings.far_field_cell_m, settings.hand_over_cells,
-                                   settings.seed ? std::to_string(*settings.seed)
-                                                 : "the gap's own and 2, 3, 4, the dense stand's own");
-  std::vector<Finding> findings;
-  findings.push_back(gap_regrowth(HELIOSTAND_SOURCE_DIR, out, settings, report));
-  findings.push_back(self_thinning(out, settings, report));
-  std::ofstream(out / "stand_light.md") << report;
-  int failed = 0;
-  for (const Finding& f : findings) {
-    std::cout << (f.holds ? "holds: " : "FAILS: ") << f.text << "\n";
-    failed += !f.holds;
+  try {
+    return run_findings(out, settings);
+  } catch (const std::exception& e) {  // e.g. a run or report that could not be written: never a silent 0
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
   }
-  std::cout << "report: " << (out / "stand_light.md").string() << "\n";
-  return failed ? 1 : 0;
 }

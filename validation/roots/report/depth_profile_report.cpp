@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "io/output_folder.hpp"
 #include "root_experiments.hpp"
 #include "roots/reference_root_field_solver.hpp"
 #include "roots/root_metrics.hpp"
@@ -80,12 +80,12 @@ int main(int argc, char** argv) {
     const std::filesystem::path path(argv[1]);
     std::error_code ignored;
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
-    std::ofstream file(path);
-    if (!file) {
-      std::cerr << "error: cannot write " << argv[1] << "\n";
+    try {
+      heliostand::write_whole_file(path, out.str(), path);  // checked at its close: a full disk is an error too
+    } catch (const heliostand::OutputFolderError& e) {
+      std::cerr << "error: " << e.what() << "\n";
       return 2;
     }
-    file << out.str();
   } else {
     std::cout << out.str();
   }
