@@ -28,8 +28,12 @@ std::vector<BudStart> bud_sphere(const BudSphere& sphere, std::uint64_t seed, in
   RandomStream random(seed, {0xB0D5u, static_cast<std::uint64_t>(group)});
   std::vector<BudStart> buds;
   for (int i = 0; i < sphere.buds; ++i) {
-    // Uniform in the ball: uniform direction, radius ~ cube root of a uniform number.
-    const glm::dvec3 offset = random_direction(random) * sphere.radius * std::cbrt(random.uniform());
+    // Uniform in the ball: uniform direction, radius ~ cube root of a uniform number. Drawn in two statements:
+    // the operands of one `*` are evaluated in an order the compiler chooses, so GCC and clang drew these two in
+    // opposite orders and placed the same seed's buds differently.
+    const double radius_fraction = std::cbrt(random.uniform());
+    const glm::dvec3 direction = random_direction(random);
+    const glm::dvec3 offset = direction * sphere.radius * radius_fraction;
     BudStart bud;
     bud.position = sphere.centre + offset;
     bud.direction = random_direction(random);
