@@ -37,6 +37,10 @@ if(MPI_CXX_FOUND AND MPIEXEC_EXECUTABLE)
   set_tests_properties(cli.batch.mpi_ranks PROPERTIES FIXTURES_SETUP heliostand_batch_mpi TIMEOUT 300
                        RESOURCE_LOCK heliostand_batch_root
                        ENVIRONMENT "${BATCH_ENV};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_btl_vader_single_copy_mechanism=none")
+  if(HELIOSTAND_SANITIZE)  # Open MPI's own leaks are suppressed by library (sanitizers/lsan.supp), on whole stacks
+    set_tests_properties(cli.batch.mpi_ranks PROPERTIES ENVIRONMENT_MODIFICATION
+                         "${HELIOSTAND_LSAN_SUPPRESSIONS}:fast_unwind_on_malloc=0")
+  endif()
   add_test(NAME cli.batch.mpi_equals_local_pool
            COMMAND python3 ${BATCH_DRIVER} same ${BATCH_TESTS}/local ${BATCH_TESTS}/mpi)
   set_tests_properties(cli.batch.mpi_equals_local_pool PROPERTIES
