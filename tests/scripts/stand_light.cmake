@@ -25,6 +25,18 @@ add_test(NAME validation.stand_light.refuses_bad_hand_over
 set_tests_properties(validation.stand_light.refuses_bad_hand_over PROPERTIES
   LABELS "validation" PASS_REGULAR_EXPRESSION "--hand-over-cells: Value 5 not in range")
 
+# A report that cannot be written is refused before the runs (exit 2, naming the file), not after their minutes:
+# OUT_DIR/stand_light.md is a folder here, and nothing but it may be left in OUT_DIR (the runs' folders would be).
+set(STAND_LIGHT_UNWRITABLE ${PROJECT_BINARY_DIR}/validation/stand_light_unwritable)
+add_test(NAME validation.stand_light.unwritable_report
+         COMMAND sh -c "rm -rf \"$1\" && mkdir -p \"$1/stand_light.md\" && out=$1 && shift && \"$@\" || exit 1
+                        left=$(ls -A \"$out\"); [ \"$left\" = stand_light.md ] || { echo \"runs started before the refusal: $left\"; exit 1; }"
+                 sh ${STAND_LIGHT_UNWRITABLE}
+                 ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=cannot write [^ ]*/stand_light.md: Is a directory"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 $<TARGET_FILE:stand_light_validation> ${STAND_LIGHT_UNWRITABLE})
+set_tests_properties(validation.stand_light.unwritable_report PROPERTIES LABELS "validation" TIMEOUT 1200)
+
 foreach(run self_thinning)
   add_test(NAME validation.stand_light.render_${run}
            COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/render.sh

@@ -19,7 +19,8 @@
 // replaces them and the dense plantation's own seed (3) by S alone: one draw of each finding.
 //
 // Writes every run's full outputs (stand.pvd, tables) under OUT_DIR, and OUT_DIR/stand_light.md with the
-// measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage.
+// measurements. Exit status 0 when both findings hold, 1 when one does not, 2 on bad usage or a report that cannot
+// be written (refused before the runs).
 // Cost is kept CI-sized: roots off, a coarse sky (8 x 16 patches), 10 years.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -27,8 +28,10 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -269,9 +272,25 @@ Finding self_thinning(const fs::path& out, FindingRun settings, std::string& rep
   return finding;
 }
 
+// Throws cannot_write(report, ...) unless `report` can be written: checked before the runs, so that a report the
+// program could not write is refused at once, not after minutes of growth. An existing file is opened to append
+// (and left as it is); a missing one is tried as its temporary sibling, which is removed, so nothing is left.
+void check_report_writable(const fs::path& report) {
+  std::error_code ignored;
+  if (fs::exists(report, ignored)) {
+    errno = 0;
+    std::ofstream probe(report, std::ios::binary | std::ios::app);
+    if (!probe) throw cannot_write(report, errno);
+  } else {
+    AtomicFile probe(report);  // never committed: its temporary is deleted when it goes out of scope
+    probe.write("");
+  }
+}
+
 // Both findings, their report written to OUT_DIR/stand_light.md; exit status 1 when one fails.
 int run_findings(const fs::path& out, const FindingRun& settings) {
   fs::create_directories(out);
+  check_report_writable(out / "stand_light.md");
   std::string report = "# Seed 000 at stand scale\n\nWritten by `stand_light_validation` "
                        "(validation/stand_light). Roots off, sky 8 x 16 patches, near-field cut-off " +
                        fmt::format("{:g} m, far-field cells {:g} m taking over {:g} cell edge(s) beyond it, seed {}.\n\n",
