@@ -7,6 +7,7 @@
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
 #include "cli/devices_command.hpp"
+#include "cli/number_checks.hpp"
 #include "core/parallel_for.hpp"
 
 namespace heliostand::cli {
@@ -42,7 +43,7 @@ int run(int argc, char** argv) {
   app.add_option("--threads", threads,
                  "Threads for the per-tree work (crowns, light response, root buds); the answers do not depend on it. "
                  "Default: the cores. The OpenCL device chooses its own")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_check());
 
   int status = 0;
   add_check_command(app, status);

@@ -1,6 +1,7 @@
 // heliostand batch MANIFEST: grow every stand × scenario × seed of a manifest (batch/batch.hpp).
 #include "batch/batch.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 
 namespace heliostand::cli {
 
@@ -15,14 +16,14 @@ void add_batch_command(CLI::App& app, int& status) {
   command->add_option("manifest", *manifest, "Batch manifest TOML")->required();
   command->add_option("-o,--out", *out, "Output root (overrides the manifest's `out`)");
   command->add_option("-j,--jobs", options->jobs, "Runs at once (per MPI rank); default: the cores, 1 under MPI")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_check());
   command->add_flag("-f,--force", options->force, "Delete an earlier batch in the output root and start over");
   command->add_flag("--no-vtk", options->no_vtk, "Write the tables only");
   command->add_option("--device", *device, "Device of every run (overrides the manifest and the scenarios)");
   command->add_option("--checkpoint-every", options->checkpoint_every,
                       "Each run writes a checkpoint after every N years; the batch started again resumes its "
                       "unfinished runs from them (grow --resume) instead of growing them anew")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_check());
   command->callback([=, &status] {
     options->manifest = *manifest;
     if (!out->empty()) options->out = *out;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
 #include "io/output_folder.hpp"
@@ -44,7 +45,7 @@ void add_bench_stand_command(CLI::App& bench) {
   auto* stand = bench.add_subcommand(
       "stand", "Grow a scenario without the VTK series and report seconds per stage, tree-years/s and peak memory");
   stand->add_option("scenario", options->scenario, "Scenario TOML file")->required();
-  stand->add_option("--years", options->years, "Years to simulate (overrides run.years)")->check(CLI::PositiveNumber);
+  stand->add_option("--years", options->years, "Years to simulate (overrides run.years)")->check(whole_number_check());
   stand->add_option("--seed", options->seed, "Random seed (overrides run.seed)")->check(seed_check());
   stand->add_option("--device", options->device, "auto | reference | opencl | opencl:N (overrides run.device)")
       ->check(check_device);
@@ -86,7 +87,7 @@ void add_bench_light_command(CLI::App& bench) {
   auto* balls = light->add_option("--balls", options->ball_counts,
                                   "Synthetic stand sizes in leaf balls (repeatable; default 1000, 10000 and 100000 "
                                   "unless --stand is given)")
-                    ->check(CLI::PositiveNumber);
+                    ->check(whole_number_check());
   light->add_option("--stand", *scenarios,
                     "A scenario whose stand is established as `grow` establishes it (year 0, no growth) and lit with "
                     "its own [light] parameters (repeatable; combines with --balls)");
@@ -98,11 +99,11 @@ void add_bench_light_command(CLI::App& bench) {
   const char* overrides_stand = " (synthetic stands; for a --stand, only when given: else its scenario's value)";
   overrides->cutoff = light->add_option("--cutoff", options->parameters.cutoff_m,
                                         std::string("Near-field cut-off, m") + overrides_stand)
-                          ->check(CLI::PositiveNumber)
+                          ->check(positive_amount_check())
                           ->capture_default_str();
   overrides->far_field_cell = light->add_option("--far-field-cell", options->parameters.far_field_cell_m,
                                                 std::string("Far-field voxel edge, m") + overrides_stand)
-                                  ->check(CLI::PositiveNumber)
+                                  ->check(positive_amount_check())
                                   ->capture_default_str();
   overrides->hand_over =
       light->add_option("--far-field-hand-over", options->parameters.far_field_hand_over_cells,
@@ -129,7 +130,7 @@ void add_bench_light_command(CLI::App& bench) {
                     "Largest stand solved whole by OpenCL exact (above: subsample)")
       ->capture_default_str();
   light->add_option("--subsample", options->subsample, "Balls in the subsample (timing extrapolation and errors)")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number_check())
       ->capture_default_str();
   auto* evaluations = light->add_option("--evaluations", options->evaluations,
                     "Evaluations of the OpenCL culled + far-field solver, one after another with one solver (the "

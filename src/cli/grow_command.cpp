@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
 #include "run/simulation.hpp"
@@ -64,7 +65,7 @@ void add_grow_command(CLI::App& app, int& status) {
   command->add_flag("-f,--force", arguments->force, "Replace the contents of a non-empty output folder");
   command->add_option("--seed", arguments->seed, "Random seed (overrides run.seed)")->check(seed_check());
   command->add_option("--years", arguments->years, "Years to simulate (overrides run.years)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_check());
   command->add_option("--device", arguments->device, "auto | reference | opencl | opencl:N (overrides run.device)")
       ->check([](const std::string& text) {
         try {
@@ -77,7 +78,7 @@ void add_grow_command(CLI::App& app, int& status) {
   command->add_flag("--no-vtk", arguments->no_vtk, "Write the tables only (batch forecasts)");
   command->add_option("--checkpoint-every", arguments->checkpoint_every,
                       "Write a checkpoint after every N simulated years (the newest two are kept)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_check());
   auto* resume = command->add_flag("--resume", arguments->resume,
                                    "Continue the interrupted run in --out from its newest usable checkpoint "
                                    "(same scenario and options)");

@@ -1,0 +1,38 @@
+#pragma once
+// The checks of the options that take a count or an amount above zero. CLI11 2.1's PositiveNumber refuses 0 with
+// "Value 0 not in range 0.000000 to 179769313486231570814527...000000" (its lower end is the smallest positive
+// double, printed to six places, its upper end every digit of the largest) and a word with the same sentence; these
+// say what is expected and what was given, as the scenario's own checks do.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace heliostand {
+
+// A count: a whole number >= 1 written in digits ("--years: a whole number >= 1 is expected, got 0").
+inline CLI::Validator whole_number_check() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        const bool above_zero = digits && value.find_first_not_of('0') != std::string::npos;
+        return above_zero ? std::string{} : "a whole number >= 1 is expected, got " + value;
+      },
+      "N >= 1");
+}
+
+// An amount: a finite number above 0 ("--cutoff: a number > 0 is expected, got -1").
+inline CLI::Validator positive_amount_check() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        char* end = nullptr;
+        const double number = value.empty() ? 0.0 : std::strtod(value.c_str(), &end);
+        const bool parsed = !value.empty() && end == value.c_str() + value.size();
+        return parsed && std::isfinite(number) && number > 0.0 ? std::string{}
+                                                               : "a number > 0 is expected, got " + value;
+      },
+      "X > 0");
+}
+
+}  // namespace heliostand

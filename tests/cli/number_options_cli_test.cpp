@@ -1,0 +1,59 @@
+// The options that take a count or an amount above zero say what they expect and what they were given
+// (src/cli/number_checks.hpp), not CLI11 2.1's "Value 0 not in range 0.000000 to 179769313486231570...000000": exit 2,
+// before anything runs.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cli/cli_runner.hpp"
+#include "cli/number_checks.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+std::string check(const CLI::Validator& validator, std::string value) { return validator(value); }
+
+TEST(NumberChecks, ACountIsAWholeNumberOfAtLeastOne) {
+  for (const std::string good : {"1", "12", "007", "2500"}) EXPECT_EQ(check(whole_number_check(), good), "") << good;
+  for (const std::string bad : {"0", "00", "-1", "+3", "1.5", "1e3", "abc", "", " 2", "2 "})
+    EXPECT_EQ(check(whole_number_check(), bad), "a whole number >= 1 is expected, got " + bad) << bad;
+}
+
+TEST(NumberChecks, AnAmountIsAFiniteNumberAboveZero) {
+  for (const std::string good : {"3", "0.5", "1e-3", "2.5e1"}) EXPECT_EQ(check(positive_amount_check(), good), "") << good;
+  for (const std::string bad : {"0", "-0", "-1", "inf", "nan", "1e999", "abc", "", "1x", "3 "})
+    EXPECT_EQ(check(positive_amount_check(), bad), "a number > 0 is expected, got " + bad) << bad;
+}
+
+// Every option that carries one of the checks, through the program as a user runs it.
+TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
+  const std::string tiny = source_path("stands/tiny/scenario.toml").string();
+  const std::string out = (std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / "number-options").string();
+  const std::string count = "a whole number >= 1 is expected, got ", amount = "a number > 0 is expected, got ";
+  struct Case {
+    std::string arguments, refusal;
+  };
+  const std::vector<Case> cases = {
+      {"--threads 0 check " + tiny, "--threads: " + count + "0"},
+      {"grow " + tiny + " --out " + out + " --years 0", "--years: " + count + "0"},
+      {"grow " + tiny + " --out " + out + " --checkpoint-every -1", "--checkpoint-every: " + count + "-1"},
+      {"batch manifest.toml --jobs 1.5", "--jobs: " + count + "1.5"},
+      {"batch manifest.toml --checkpoint-every abc", "--checkpoint-every: " + count + "abc"},
+      {"bench stand " + tiny + " --years 0", "--years: " + count + "0"},
+      {"bench light --balls 1e5", "--balls: " + count + "1e5"},
+      {"bench light --subsample 0", "--subsample: " + count + "0"},
+      {"bench light --cutoff 0", "--cutoff: " + amount + "0"},
+      {"bench light --far-field-cell inf", "--far-field-cell: " + amount + "inf"},
+  };
+  for (const Case& c : cases) {
+    const CliResult run = run_cli(c.arguments);
+    EXPECT_EQ(run.status, 2) << c.arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find(c.refusal), std::string::npos) << c.arguments << "\n" << run.output;
+    EXPECT_EQ(run.output.find("179769"), std::string::npos) << c.arguments << "\n" << run.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a refused grow wrote its output folder";
+}
+
+}  // namespace
+}  // namespace heliostand::testing
