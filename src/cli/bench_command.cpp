@@ -122,12 +122,15 @@ void add_bench_light_command(CLI::App& bench) {
                           overrides_stand);
   light->add_option("--reference-exact-max", options->reference_exact_max,
                     "Largest stand solved whole by reference exact (above: subsample)")
+      ->check(whole_number_check(0))
       ->capture_default_str();
   light->add_option("--reference-culled-max", options->reference_culled_max,
                     "Largest stand solved whole by reference culled (above: subsample)")
+      ->check(whole_number_check(0))
       ->capture_default_str();
   light->add_option("--opencl-exact-max", options->opencl_exact_max,
                     "Largest stand solved whole by OpenCL exact (above: subsample)")
+      ->check(whole_number_check(0))
       ->capture_default_str();
   light->add_option("--subsample", options->subsample, "Balls in the subsample (timing extrapolation and errors)")
       ->check(whole_number_check())

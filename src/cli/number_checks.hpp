@@ -11,15 +11,18 @@
 
 namespace heliostand {
 
-// A count: a whole number >= 1 written in digits ("--years: a whole number >= 1 is expected, got 0").
-inline CLI::Validator whole_number_check() {
+// A count: a whole number >= `minimum` written in digits ("--years: a whole number >= 1 is expected, got 0"). Without
+// it an unsigned option would store "-1" as 2^64 - 1 without a word.
+inline CLI::Validator whole_number_check(unsigned long long minimum = 1) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [minimum](std::string& value) -> std::string {
         const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-        const bool above_zero = digits && value.find_first_not_of('0') != std::string::npos;
-        return above_zero ? std::string{} : "a whole number >= 1 is expected, got " + value;
+        // Past 19 digits a number is above any minimum; whether it fits the option's type is CLI11's own check.
+        const bool enough = digits && (value.size() > 19 || std::stoull(value) >= minimum);
+        return enough ? std::string{}
+                      : "a whole number >= " + std::to_string(minimum) + " is expected, got " + value;
       },
-      "N >= 1");
+      "N >= " + std::to_string(minimum));
 }
 
 // An amount: a finite number above 0 ("--cutoff: a number > 0 is expected, got -1").

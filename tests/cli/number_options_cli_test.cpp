@@ -1,6 +1,6 @@
 // The options that take a count or an amount above zero say what they expect and what they were given
-// (src/cli/number_checks.hpp), not CLI11 2.1's "Value 0 not in range 0.000000 to 179769313486231570...000000": exit 2,
-// before anything runs.
+// (src/cli/number_checks.hpp), not CLI11 2.1's "Value 0 not in range 0.000000 to 179769313486231570...000000", and an
+// unsigned limit is not wrapped from -1 to 2^64 - 1: exit 2, before anything runs.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -20,8 +20,16 @@ TEST(NumberChecks, ACountIsAWholeNumberOfAtLeastOne) {
     EXPECT_EQ(check(whole_number_check(), bad), "a whole number >= 1 is expected, got " + bad) << bad;
 }
 
+TEST(NumberChecks, ALimitMayBeZeroButNeverNegative) {
+  for (const std::string good : {"0", "1", "4000", "99999999999999999999999"})
+    EXPECT_EQ(check(whole_number_check(0), good), "") << good;
+  for (const std::string bad : {"-1", "1.5", "abc", ""})
+    EXPECT_EQ(check(whole_number_check(0), bad), "a whole number >= 0 is expected, got " + bad) << bad;
+}
+
 TEST(NumberChecks, AnAmountIsAFiniteNumberAboveZero) {
-  for (const std::string good : {"3", "0.5", "1e-3", "2.5e1"}) EXPECT_EQ(check(positive_amount_check(), good), "") << good;
+  for (const std::string good : {"3", "0.5", "1e-3", "2.5e1"})
+    EXPECT_EQ(check(positive_amount_check(), good), "") << good;
   for (const std::string bad : {"0", "-0", "-1", "inf", "nan", "1e999", "abc", "", "1x", "3 "})
     EXPECT_EQ(check(positive_amount_check(), bad), "a number > 0 is expected, got " + bad) << bad;
 }
@@ -31,6 +39,7 @@ TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
   const std::string tiny = source_path("stands/tiny/scenario.toml").string();
   const std::string out = (std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / "number-options").string();
   const std::string count = "a whole number >= 1 is expected, got ", amount = "a number > 0 is expected, got ";
+  const std::string limit = "a whole number >= 0 is expected, got ";
   struct Case {
     std::string arguments, refusal;
   };
@@ -42,10 +51,14 @@ TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
       {"batch manifest.toml --checkpoint-every abc", "--checkpoint-every: " + count + "abc"},
       {"bench stand " + tiny + " --years 0", "--years: " + count + "0"},
       {"bench light --balls 1e5", "--balls: " + count + "1e5"},
-      {"bench light --subsample 0", "--subsample: " + count + "0"},
-      {"bench light --cutoff 0", "--cutoff: " + amount + "0"},
-      {"bench light --far-field-cell inf", "--far-field-cell: " + amount + "inf"},
+      {"bench light --balls 10 --subsample 0", "--subsample: " + count + "0"},
+      {"bench light --balls 10 --reference-exact-max -1", "--reference-exact-max: " + limit + "-1"},
+      {"bench light --balls 10 --reference-culled-max -1", "--reference-culled-max: " + limit + "-1"},
+      {"bench light --balls 10 --opencl-exact-max 2.5", "--opencl-exact-max: " + limit + "2.5"},
+      {"bench light --balls 10 --cutoff 0", "--cutoff: " + amount + "0"},
+      {"bench light --balls 10 --far-field-cell inf", "--far-field-cell: " + amount + "inf"},
   };
+  // (--balls 10: were a refusal to regress, the bench would run in a second, not for hours.)
   for (const Case& c : cases) {
     const CliResult run = run_cli(c.arguments);
     EXPECT_EQ(run.status, 2) << c.arguments << "\n" << run.output;
