@@ -8,34 +8,21 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <system_error>
+
+#include "../folders_removed_at_exit.hpp"
 
 namespace heliostand::fuzz {
 
-// The folder of one fuzzing process, deleted with what it holds when the process exits: libFuzzer ends a timed run
-// with exit(0), which runs the destructors of statics, so no run leaves its inputs in the temporary folder. A run
-// that crashes leaves it (the input that crashed is saved as an artifact anyway).
-class ScratchFolder {
- public:
-  ScratchFolder()
-      : path_(std::filesystem::temp_directory_path() / ("heliostand-fuzz-" + std::to_string(::getpid()))) {
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;  // best effort at exit: never throw from a destructor
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
+// The folder of one fuzzing process, deleted when the process exits (no run leaves its inputs in the temporary
+// folder; one that crashes leaves them, and the input that crashed is saved as an artifact anyway).
 inline const std::filesystem::path& scratch_folder() {
-  static const ScratchFolder folder;
-  return folder.path();
+  static const std::filesystem::path folder = [] {
+    auto path = std::filesystem::temp_directory_path() / ("heliostand-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path);
+    testing::folders_removed_at_exit().add(path);
+    return path;
+  }();
+  return folder;
 }
 
 inline std::filesystem::path write_input(const std::string& name, const std::uint8_t* data, std::size_t size) {

@@ -4,15 +4,12 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <string>
-#include <system_error>
-#include <vector>
 
 #include "core/input_error.hpp"
+#include "folders_removed_at_exit.hpp"
 #include "survey/read_survey.hpp"
 
 namespace heliostand::testing {
@@ -26,32 +23,9 @@ inline std::filesystem::path test_file_folder() {
          (test_name + "-" + std::to_string(::getpid()));
 }
 
-// The folders this process wrote test files into, deleted when it exits: a test reads its files within itself, and
-// the folders carry the process id, so without this every run of the suite left a hundred of them behind.
-class TestFileFolders {
- public:
-  ~TestFileFolders() {
-    std::error_code ignored;  // best effort at exit: never throw from a destructor
-    for (const std::filesystem::path& folder : folders_) std::filesystem::remove_all(folder, ignored);
-  }
-  void add(const std::filesystem::path& folder) {
-    const std::lock_guard lock(mutex_);
-    if (std::find(folders_.begin(), folders_.end(), folder) == folders_.end()) folders_.push_back(folder);
-  }
-
- private:
-  std::mutex mutex_;
-  std::vector<std::filesystem::path> folders_;
-};
-
-inline TestFileFolders& test_file_folders() {
-  static TestFileFolders folders;
-  return folders;
-}
-
 inline std::filesystem::path write_test_file(const std::string& name, const std::string& text) {
   const auto dir = test_file_folder();
-  test_file_folders().add(dir);
+  folders_removed_at_exit().add(dir);  // the folder carries the process id: without this each run left ~100 behind
   const auto path = dir / name;
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
