@@ -1,8 +1,8 @@
 #pragma once
-// The checks of the options that take a count or an amount above zero. CLI11 2.1's PositiveNumber refuses 0 with
-// "Value 0 not in range 0.000000 to 179769313486231570814527...000000" (its lower end is the smallest positive
-// double, printed to six places, its upper end every digit of the largest) and a word with the same sentence; these
-// say what is expected and what was given, as the scenario's own checks do.
+// The checks of the options that take a count or an amount. CLI11 2.1's PositiveNumber refuses 0 with "Value 0 not in
+// range 0.000000 to 179769313486231570814527...000000" (its lower end is the smallest positive double printed to six
+// places, its upper end every digit of the largest), and a word such as "abc" with the same sentence; these say what
+// is expected and what was given, as the scenario's own checks do.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
