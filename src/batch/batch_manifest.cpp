@@ -3,12 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <set>
 
 #include "core/input_error.hpp"
+#include "scenario/toml_file.hpp"
 #include "scenario/toml_table_reader.hpp"
 
 namespace heliostand {
@@ -23,22 +21,6 @@ bool is_safe_folder_name(std::string_view name) {
 }
 
 namespace {
-
-toml::table parse_manifest(const fs::path& file) {
-  std::error_code ec;
-  std::ifstream probe(file);
-  if (fs::is_directory(file, ec) || !probe) {
-    const std::string reason = fs::is_directory(file, ec) ? "it is a directory" : std::strerror(errno);
-    throw InputError({{file.string(), 0, "", fmt::format("cannot read the batch manifest: {}", reason)}}, "key");
-  }
-  try {
-    return toml::parse_file(file.string());
-  } catch (const toml::parse_error& error) {
-    throw InputError({{file.string(), static_cast<int>(error.source().begin.line), "",
-                       fmt::format("not valid TOML: {}", error.description())}},
-                     "key");
-  }
-}
 
 // A file named in the manifest, relative to the manifest's folder; must be a readable file.
 std::optional<fs::path> existing_file(TomlTableReader& reader, std::string_view key, bool required,
@@ -140,7 +122,7 @@ std::vector<std::uint64_t> read_seeds(TomlTableReader& root) {
 }  // namespace
 
 BatchManifest load_batch_manifest(const fs::path& file) {
-  const toml::table root_table = parse_manifest(file);
+  const toml::table root_table = read_toml_file(file, file.string(), "batch manifest");
   ScenarioProblems problems(file.string());
   TomlTableReader root(root_table, "", problems);
   const fs::path base = file.parent_path();

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 
 #include "scenario/scenario.hpp"
 #include "scenario/scenario_tables.hpp"
+#include "scenario/toml_file.hpp"
 #include "survey/read_survey.hpp"
 
 namespace heliostand {
@@ -36,22 +34,6 @@ std::span<const TableParserEntry> scenario_table_parsers() {
 namespace {
 
 using namespace scenario_detail;
-
-toml::table parse_toml_file(const std::filesystem::path& file, const std::string& label) {
-  std::error_code ec;
-  std::ifstream probe(file);
-  if (std::filesystem::is_directory(file, ec) || !probe) {
-    const std::string reason = std::filesystem::is_directory(file, ec) ? "it is a directory" : std::strerror(errno);
-    throw InputError({{label, 0, "", fmt::format("cannot read the scenario: {}", reason)}}, "key");
-  }
-  try {
-    return toml::parse_file(file.string());
-  } catch (const toml::parse_error& error) {
-    throw InputError({{label, static_cast<int>(error.source().begin.line), "",
-                       fmt::format("not valid TOML: {}", error.description())}},
-                     "key");
-  }
-}
 
 void report_unknown_tables(const toml::table& root, ScenarioProblems& problems) {
   std::vector<std::string_view> known;
@@ -87,7 +69,7 @@ void read_stand_survey(ScenarioDraft& draft, ScenarioProblems& problems) {
 
 Scenario load_scenario(const std::filesystem::path& file) {
   const std::string label = file.string();
-  const toml::table root = parse_toml_file(file, label);
+  const toml::table root = read_toml_file(file, label, "scenario");
 
   ScenarioProblems problems(label);
   ScenarioDraft draft;

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/cli_runner.hpp"
 
@@ -64,6 +66,28 @@ TEST(KanamaruCli, ACrownThatCannotBeWrittenIsAnErrorAndNothingIsLeftHalfWritten)
             std::string::npos)
       << run.output;
   EXPECT_EQ(names_in(folder), std::set<std::string>{".heliostand-output"}) << "no crown, no temporary";
+}
+
+// A scenario path that is a folder, missing or not TOML is refused as the stand scenario is, naming the file and the
+// reason; nothing is written. (toml++ alone read the folder as an empty table: "expected a [model] table".)
+TEST(KanamaruCli, AScenarioThatCannotBeReadIsRefusedWithTheReason) {
+  const auto folder = scratch_folder("kanamaru_unreadable_scenario");
+  const fs::path not_toml = scratch_folder("kanamaru_not_toml") / "scenario.toml";
+  fs::create_directories(not_toml.parent_path());
+  std::ofstream(not_toml) << "[model\n";
+  const std::string source = source_path("stands").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {source, source + ": cannot read the scenario: it is a directory"},
+      {"/nonexistent/heliostand/scenario.toml",
+       "/nonexistent/heliostand/scenario.toml: cannot read the scenario: No such file or directory"},
+      {not_toml.string(), not_toml.string() + ":1: not valid TOML: "},
+  };
+  for (const auto& [scenario, refusal] : cases) {
+    const CliResult run = run_cli("kanamaru " + scenario + " --out " + folder.string());
+    EXPECT_EQ(run.status, 2) << run.output;
+    EXPECT_NE(run.output.find("error: " + refusal), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(folder)) << scenario;
+  }
 }
 
 }  // namespace

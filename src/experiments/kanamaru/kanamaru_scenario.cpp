@@ -15,6 +15,7 @@
 #include "io/output_folder.hpp"
 #include "io/pvd_collection.hpp"
 #include "rng/random_stream.hpp"
+#include "scenario/toml_file.hpp"
 #include "scenario/toml_table_reader.hpp"
 
 namespace heliostand {
@@ -23,13 +24,7 @@ KanamaruScenario load_kanamaru_scenario(const std::filesystem::path& file) {
   ScenarioProblems problems(file.string());
   KanamaruScenario s;
   s.file = file;
-  toml::table root;
-  try {
-    root = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    problems.add(e.source(), "", std::string(e.description()));
-    problems.throw_if_any();
-  }
+  const toml::table root = read_toml_file(file, file.string(), "scenario");
   TomlTableReader top(root, "", problems);
   const toml::node* model_node = top.node("model");
   top.report_unknown_keys();
