@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <sstream>
+#include <utility>
 
 #include "core/input_error.hpp"
+#include "scenario/toml_file.hpp"
 
 namespace heliostand {
 namespace fs = std::filesystem;
@@ -43,20 +45,11 @@ toml::table with_absolute_paths(toml::table layer, const fs::path& base_folder) 
   return layer;
 }
 
-toml::table read_stand_scenario(const BatchStand& stand) {
-  try {
-    return toml::parse_file(stand.scenario_file.string());
-  } catch (const toml::parse_error& error) {
-    throw InputError({{stand.scenario_file.string(), static_cast<int>(error.source().begin.line), "",
-                       fmt::format("not valid TOML: {}", error.description())}},
-                     "key");
-  }
-}
-
 }  // namespace
 
 toml::table compose_scenario(const BatchManifest& manifest, const BatchStand& stand, const BatchScenario& scenario) {
-  toml::table composed = with_absolute_paths(read_stand_scenario(stand), stand.scenario_file.parent_path());
+  toml::table stand_scenario = read_toml_file(stand.scenario_file, stand.scenario_file.string(), "scenario");
+  toml::table composed = with_absolute_paths(std::move(stand_scenario), stand.scenario_file.parent_path());
   const auto apply = [&](const ScenarioLayer& layer) {
     merge_scenario_layer(composed, with_absolute_paths(layer.table, layer.base_folder));
   };
