@@ -36,8 +36,6 @@ bool run_finished(const fs::path& root, const BatchRun& run) {
 
 namespace {
 
-bool is_empty_folder(const fs::path& folder) { return fs::directory_iterator(folder) == fs::directory_iterator(); }
-
 std::string read_file(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -48,20 +46,13 @@ void take_root(const fs::path& root, bool force) {
   if (fs::is_symlink(fs::symlink_status(root, ec))) {
     throw OutputFolderError(fmt::format("output folder {} is a symbolic link; give the folder it points to", root.string()));
   }
-  if (!fs::exists(root, ec)) {
-    fs::create_directories(root, ec);
-    if (ec) throw OutputFolderError(fmt::format("cannot create output folder {}: {}", root.string(), ec.message()));
-  } else if (!fs::is_directory(root)) {
-    throw OutputFolderError(fmt::format("output folder {} exists and is not a folder", root.string()));
-  } else if (!is_empty_folder(root)) {
+  if (make_output_folder(root)) {
     if (!fs::exists(root / batch_marker_name)) {
       throw OutputFolderError(fmt::format(
           "output folder {} is not empty and does not hold a heliostand batch (no {} file); choose another folder",
           root.string(), batch_marker_name));
     }
-    if (force) {
-      for (const fs::directory_entry& entry : fs::directory_iterator(root)) fs::remove_all(entry.path());
-    }
+    if (force) empty_folder(root);
   }
   const fs::path marker = root / batch_marker_name;  // written whole and checked at its close, as a run's marker
   write_whole_file(marker, "This folder holds a heliostand batch; `heliostand batch --force` may delete its contents.\n",

@@ -60,46 +60,44 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
-namespace {
-
-bool is_empty_folder(const fs::path& folder) { return fs::directory_iterator(folder) == fs::directory_iterator(); }
-
-void clear_folder(const fs::path& folder) {
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) fs::remove_all(entry.path());
+bool make_output_folder(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::exists(folder, error)) {
+    fs::create_directories(folder, error);
+    if (error) {
+      throw OutputFolderError(fmt::format("cannot create output folder {}: {}", folder.string(), error.message()));
+    }
+    return false;
+  }
+  if (!fs::is_directory(folder)) {
+    throw OutputFolderError(fmt::format("output folder {} exists and is not a folder", folder.string()));
+  }
+  return fs::directory_iterator(folder) != fs::directory_iterator();
 }
 
-}  // namespace
+void empty_folder(const fs::path& folder) {
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) fs::remove_all(entry.path());
+}
 
 OutputFolder::OutputFolder(fs::path root, bool force, bool resume) : root_(std::move(root)) {
   if (resume) {
     take_over_for_resume();
     return;
   }
-  std::error_code error;
-  if (fs::exists(root_, error)) {
-    if (!fs::is_directory(root_)) {
-      throw OutputFolderError(fmt::format("output folder {} exists and is not a folder", root_.string()));
+  if (make_output_folder(root_)) {
+    if (!force) {
+      throw OutputFolderError(fmt::format(
+          "output folder {} already exists and is not empty; choose another folder, or pass --force "
+          "to replace an earlier heliostand run in it",
+          root_.string()));
     }
-    if (!is_empty_folder(root_)) {
-      if (!force) {
-        throw OutputFolderError(fmt::format(
-            "output folder {} already exists and is not empty; choose another folder, or pass --force "
-            "to replace an earlier heliostand run in it",
-            root_.string()));
-      }
-      if (!fs::exists(root_ / marker_name)) {
-        throw OutputFolderError(fmt::format(
-            "output folder {} is not empty and does not hold an earlier heliostand run (no {} file); "
-            "refusing to delete its contents even with --force",
-            root_.string(), marker_name));
-      }
-      clear_folder(root_);
+    if (!fs::exists(root_ / marker_name)) {
+      throw OutputFolderError(fmt::format(
+          "output folder {} is not empty and does not hold an earlier heliostand run (no {} file); "
+          "refusing to delete its contents even with --force",
+          root_.string(), marker_name));
     }
-  } else {
-    fs::create_directories(root_, error);
-    if (error) {
-      throw OutputFolderError(fmt::format("cannot create output folder {}: {}", root_.string(), error.message()));
-    }
+    empty_folder(root_);
   }
   // Written whole and checked at its close: a buffered stream checked only after `<<` misses a full disk.
   const fs::path marker = root_ / marker_name;

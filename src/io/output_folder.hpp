@@ -30,6 +30,14 @@ OutputFolderError cannot_write(const std::filesystem::path& final_path, int reas
 void write_whole_file(const std::filesystem::path& path, std::string_view contents,
                       const std::filesystem::path& final_path);
 
+// Makes `folder` (with its parents) to write into, or finds it there: "cannot create output folder F: REASON" or
+// "output folder F exists and is not a folder" (OutputFolderError) otherwise. True when it already holds something,
+// which each kind of output folder (a run's, a batch's) then judges by its own marker.
+bool make_output_folder(const std::filesystem::path& folder);
+
+// Deletes everything in `folder`, keeping the folder.
+void empty_folder(const std::filesystem::path& folder);
+
 // A file under its temporary name until commit() renames it into place. If never committed (an
 // exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
 class AtomicFile {

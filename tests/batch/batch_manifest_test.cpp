@@ -121,6 +121,23 @@ TEST(BatchRoot, AFolderThatIsNotABatchIsNeverTouched) {
   EXPECT_FALSE(fs::exists(folder.path() / "root/inputs"));
 }
 
+TEST(BatchRoot, AFileOrALinkInPlaceOfTheRootIsRefusedAndLeftAlone) {
+  TempFolder folder("batch-root");
+  write(folder.path() / "root", "mine\n");
+  try {
+    prepare_batch_root(folder.path() / "root", {}, true);
+    FAIL() << "a file in place of the root was accepted";
+  } catch (const OutputFolderError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "output folder " + (folder.path() / "root").string() + " exists and is not a folder");
+  }
+  EXPECT_TRUE(fs::is_regular_file(folder.path() / "root"));
+  fs::create_directories(folder.path() / "elsewhere");
+  fs::create_directory_symlink(folder.path() / "elsewhere", folder.path() / "link");
+  EXPECT_THROW(prepare_batch_root(folder.path() / "link", {}, true), OutputFolderError);
+  EXPECT_TRUE(fs::is_empty(folder.path() / "elsewhere"));
+}
+
 TEST(BatchRoot, ABatchOfAnotherManifestIsRefusedUnlessForced) {
   TempFolder folder("batch-root");
   const fs::path root = folder.path() / "root";
