@@ -2,8 +2,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "scenario/toml_file.hpp"
 #include "survey/survey_test_files.hpp"
 

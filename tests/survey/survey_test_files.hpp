@@ -15,17 +15,19 @@
 namespace heliostand::testing {
 
 // One folder per test and process: CTest runs the tests of one program in parallel processes (ctest -j), and
-// tests that share a file name ("bad.csv") would otherwise read each other's files.
+// tests that share a file name ("bad.csv") would otherwise read each other's files. Whoever names it may make it, so
+// it is deleted when the process exits: it carries the process id, and without this each run left ~100 behind.
 inline std::filesystem::path test_file_folder() {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string test_name = test ? std::string(test->test_suite_name()) + "." + test->name() : "no-test";
-  return std::filesystem::path(::testing::TempDir()) / "heliostand_inputs" /
-         (test_name + "-" + std::to_string(::getpid()));
+  const auto folder = std::filesystem::path(::testing::TempDir()) / "heliostand_inputs" /
+                      (test_name + "-" + std::to_string(::getpid()));
+  folders_removed_at_exit().add(folder);
+  return folder;
 }
 
 inline std::filesystem::path write_test_file(const std::string& name, const std::string& text) {
   const auto dir = test_file_folder();
-  folders_removed_at_exit().add(dir);  // the folder carries the process id: without this each run left ~100 behind
   const auto path = dir / name;
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
