@@ -1,7 +1,8 @@
 // The far field's optical-depth table swept on the device, layer by layer against the light: the same sweep as
-// FarField::sweep (src/light/far_field.cpp), in float. One launch per layer step; work item (eight columns from
-// 8 * get_global_id(0), patch), the columns in SIMD lanes (voxel_grid.clh): every column computes what it would
-// alone. Table layout [patch][z][y][x], density [z][y][x] (sigma, 1/m). far_field_by_cell then lays the table out
+// FarField::sweep (src/light/far_field.cpp), in float. One launch per layer step; work item (a run of eight
+// columns of one row, patch), the columns in SIMD lanes (voxel_grid.clh): every column computes what it would
+// alone. Table layout [patch][z][y][x]; the density (sigma, 1/m) [z][y][x] with `margin` cells around the x and y
+// sides (src/light/far_field_margin.hpp). far_field_by_cell then lays the table out
 // by cell for the culled light kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option
 // made by the host, is the patch count rounded up to eight; the padding holds zeros).
 #include "voxel_grid.clh"
@@ -10,13 +11,15 @@
 // length, as FarField::march: a lane stops once its patch is dark (`saturated` hits); all stop where the ray
 // leaves the grid through its top or bottom (z never wraps; beyond the grid's sides a lookup gives 0, and a
 // straight ray never comes back).
-inline float8 far_field_march8(__global const float* density, int first, int8 valid, int z, float3 direction,
-                               float start, float length, float3 cell, int4 dims, int periodic, float saturated) {
+__attribute__((always_inline)) inline float8 far_field_march8(__global const float* density, int margin, int x0,
+                                                              int y, int lanes, int z, float3 direction, float start,
+                                                              float length, float3 cell, int4 dims, int periodic,
+                                                              float saturated) {
   const float step_limit = min(cell.x, min(cell.y, cell.z));
   const int samples = max(1, (int)ceil(length / step_limit - 1e-6f));
   const float step = length / samples;
   const float3 per_metre = direction / cell;  // cells moved per metre along the ray
-  int8 active = valid;
+  int8 active = (int8)(0, 1, 2, 3, 4, 5, 6, 7) < lanes;
   float8 tau = 0.0f;
   for (int k = 0; k < samples; ++k) {
     active = active && tau < saturated;
@@ -24,23 +27,24 @@ inline float8 far_field_march8(__global const float* density, int first, int8 va
     const float3 shift = (start + (k + 0.5f) * step) * per_metre;
     const float uz = (float)z + shift.z;
     if (uz < -0.5f || uz > dims.z - 0.5f) break;
-    const float8 sigma = grid_sample_shifted8(density, first, valid, z, shift, dims, periodic, -1);
+    const float8 sigma = grid_sample_shifted8(density, margin, x0, y, lanes, z, shift, dims, periodic, -1);
     tau = select(tau, tau + sigma * step, active);
   }
   return tau;
 }
 
-__kernel void far_field_layer(__global const float* density, __global float* depth, __global const float4* patches,
-                              const float4 grid_cell, const int4 grid_dims,
+__kernel void far_field_layer(__global const float* density, const int margin, __global float* depth,
+                              __global const float4* patches, const float4 grid_cell, const int4 grid_dims,
                               const int periodic, const int layer_step, const float max_path, const float saturated,
                               const float start) {
-  const int columns = grid_dims.x * grid_dims.y;
-  const int first = get_global_id(0) * 8;
+  const int runs = (grid_dims.x + 7) / 8;  // runs of eight columns a row
+  const int y = get_global_id(0) / runs;
+  if (y >= grid_dims.y) return;
+  const int x0 = (get_global_id(0) - y * runs) * 8;
+  const int lanes = min(8, grid_dims.x - x0);
   const int patch = get_global_id(1);
-  if (first >= columns) return;
   const float3 cell = grid_cell.xyz;
   const float3 direction = patches[patch].xyz;
-  const int8 valid = first + (int8)(0, 1, 2, 3, 4, 5, 6, 7) < columns;
   const int step_z = direction.z > 0.0f ? 1 : -1;  // band centres never lie on the horizon (even V)
   const int z = direction.z > 0.0f ? grid_dims.z - 1 - layer_step : layer_step;
   const size_t cells = (size_t)grid_dims.x * grid_dims.y * grid_dims.z;
@@ -49,19 +53,21 @@ __kernel void far_field_layer(__global const float* density, __global float* dep
   const int next = z + step_z;
   float8 tau;
   if (next < 0 || next >= grid_dims.z) {
-    tau = far_field_march8(density, first, valid, z, direction, start, max_path, cell, grid_dims, periodic, saturated);
+    tau = far_field_march8(density, margin, x0, y, lanes, z, direction, start, max_path, cell, grid_dims, periodic,
+                           saturated);
   } else {
     const float reach = cell.z / fabs(direction.z);  // path to the next layer's mid-plane
-    tau = far_field_march8(density, first, valid, z, direction, start, reach, cell, grid_dims, periodic, saturated);
-    tau += grid_sample_shifted8(table, first, valid, z, reach * direction / cell, grid_dims, periodic, next);
+    tau = far_field_march8(density, margin, x0, y, lanes, z, direction, start, reach, cell, grid_dims, periodic,
+                           saturated);
+    tau += grid_sample_shifted8(table, 0, x0, y, lanes, z, reach * direction / cell, grid_dims, periodic, next);
   }
-  __global float* out = table + (size_t)z * columns + first;
-  if (all(valid)) {
+  __global float* out = table + grid_at(x0, y, z, grid_dims, 0);
+  if (lanes == 8) {
     vstore8(tau, 0, out);
   } else {
     float lane_tau[8];
     vstore8(tau, 0, lane_tau);
-    for (int l = 0; first + l < columns; ++l) out[l] = lane_tau[l];
+    for (int l = 0; l < lanes; ++l) out[l] = lane_tau[l];
   }
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +17,7 @@
 #include "compute/opencl_context.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
+#include "light/far_field_margin.hpp"
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
@@ -51,6 +53,10 @@ std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_coun
   return std::size_t(far_field_table_budget_cells(p, patch_count) * far_row(patch_count) * sizeof(float));
 }
 
+// The sweep's lookups read up to eight floats past a row's last column (cl/voxel_grid.clh, grid_sample_shifted8):
+// the density's and the swept table's buffers hold that much more.
+constexpr std::size_t sweep_overread_floats = 16;
+
 // A device buffer kept from one solve to the next, and its size.
 struct KeptBuffer {
   cl::Buffer buffer;
@@ -72,17 +78,21 @@ const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, st
 // The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
 // out by cell; it stays there for the culled kernel.
 cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
-                           std::size_t patch_count, const cl::Buffer& patches, const cl_float4& cell,
+                           std::span<const SkyPatch> sky_patches, const cl::Buffer& patches, const cl_float4& cell,
                            const cl_int4& dims, bool periodic, KeptBuffer& table_kept, std::size_t table_cap_bytes) {
   const auto& context = device.context;
-  const std::vector<float> density(far.density().begin(), far.density().end());
+  const std::size_t patch_count = sky_patches.size();
+  const int margin = sweep_margin_cells(far, sky_patches);
+  std::vector<float> density = density_with_margin(far, margin);
+  density.resize(density.size() + sweep_overread_floats, 0.0f);
   const cl::Buffer density_buffer = read_only(context, density);
   const std::size_t cells = far.grid().cell_count();
-  cl::Buffer depth(context, CL_MEM_READ_WRITE, cells * patch_count * sizeof(float));
-  const std::size_t columns = std::size_t(far.grid().dims.x) * far.grid().dims.y;
-  const std::size_t column_items = (columns + 7) / 8;  // eight columns a work item (cl/far_field.cl)
+  cl::Buffer depth(context, CL_MEM_READ_WRITE, (cells * patch_count + sweep_overread_floats) * sizeof(float));
+  const std::size_t runs = (std::size_t(far.grid().dims.x) + 7) / 8;  // eight columns of a row a work item
+  const std::size_t column_items = runs * far.grid().dims.y;
   int arg = 0;
   k.setArg(arg++, density_buffer);
+  k.setArg(arg++, cl_int(margin));
   k.setArg(arg++, depth);
   k.setArg(arg++, patches);
   k.setArg(arg++, cell);
@@ -393,7 +403,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
   const cl::Buffer depth_buffer =
       far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
-                            sky.patches().size(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic,
+                            sky.patches(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic,
                             device_->far_field_table, far_table_cap_bytes(parameters_, sky.patches().size()))
           : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
   statistics_.far_field_seconds = seconds_since(part_start);

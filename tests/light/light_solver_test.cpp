@@ -14,7 +14,10 @@
 
 #include "compute/opencl_test_backend.hpp"
 #include "light/celestial_sphere.hpp"
+#include "light/far_field.hpp"
+#include "light/far_field_margin.hpp"
 #include "light/make_light_solver.hpp"
+#include "light/occluders.hpp"
 #include "light/reference_light_solver.hpp"
 #include "light_test_stands.hpp"
 
@@ -357,6 +360,51 @@ TEST(LightEightLanes, WideGridsWithLongSlantedRaysMatchTheReferenceInTheFarField
       const std::string label = fmt::format("{}{}", periodic ? "periodic" : "open", corrected ? ", corrected" : "");
       expect_far_field_matches_reference(*device, p, 250, 12.0, 11, label);
     }
+}
+
+// The sweep reads the density with a margin around the grid's sides that holds what a lookup there gives
+// (light/far_field_margin.hpp), and lane by lane where a lookup lands beyond it: an open grid whose outermost
+// cells hold foliage (cells coarsened to fit the table's budget) gets no margin at all, and a start distance of
+// more than the margin's cap puts the slanted rays' lookups beyond it, open and periodic. All must match the
+// reference.
+TEST(LightEightLanes, GridsWithoutAMarginAndLookupsBeyondItMatchTheReferenceInTheFarField) {
+  const auto device = compute::opencl_backend_for_test();
+  if (!device) GTEST_SKIP() << "no OpenCL device";
+  LightParameters coarse;
+  coarse.exact = false;
+  coarse.sky_bands = 8;
+  coarse.sky_sectors = 16;
+  coarse.cutoff_m = 2.0;
+  coarse.transmittance = 0.6;
+  coarse.far_field_table_mb = 1;  // cells of ~1.8 m on a 16 m stand: foliage in the outermost cells
+  {
+    const CelestialSphere sky(coarse);
+    const auto balls = testing::random_stand(400, 16.0, 0.2, 0.6, 6, sky, false);
+    const FarField far(make_occluder_set(balls, PlotTorus::from(coarse), 0), coarse, sky, false);
+    ASSERT_EQ(sweep_margin_cells(far, sky.patches()), 0);
+  }
+  expect_far_field_matches_reference(*device, coarse, 400, 16.0, 6, "open, outermost cells with foliage");
+  for (const bool periodic : {false, true}) {
+    LightParameters p;
+    p.exact = false;
+    p.periodic = periodic;
+    p.sky_bands = 4;
+    p.sky_sectors = 4;
+    p.plot_x_max = p.plot_y_max = 6.0;
+    p.cutoff_m = 10.0;  // start 10.1 m: the low band's lookups ~66 cells of 0.1 m out in x and y, the cap 64
+    p.far_field_cell_m = 0.1;
+    p.transmittance = 0.6;
+    const CelestialSphere sky(p);
+    const auto balls = testing::random_stand(150, 6.0, 0.2, 0.6, 8, sky, periodic);
+    const FarField far(make_occluder_set(balls, PlotTorus::from(p), 0), p, sky, false);
+    ASSERT_EQ(sweep_margin_cells(far, sky.patches()), sweep_margin_cap);
+    for (const auto& patch : sky.patches())
+      if (patch.band == 1 || patch.band == 2)  // the bands nearest the horizon
+        ASSERT_GT(far.start_distance() * std::min(std::abs(patch.direction.x), std::abs(patch.direction.y)) / 0.1,
+                  sweep_margin_cap);
+    expect_far_field_matches_reference(*device, p, 150, 6.0, 8,
+                                       periodic ? "periodic, beyond the cap" : "open, beyond the cap");
+  }
 }
 
 // The exact and culled kernels against the reference's exact answer on `balls` (`culled` keeps every ball within
