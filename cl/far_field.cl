@@ -2,9 +2,9 @@
 // FarField::sweep (src/light/far_field.cpp), in float. One launch per layer step; work item (a run of eight
 // columns of one row, patch), the columns in SIMD lanes (voxel_grid.clh): every column computes what it would
 // alone. Table layout [patch][z][y][x]; the density (sigma, 1/m) [z][y][x] with `margin` cells around the x and y
-// sides (src/light/far_field_margin.hpp). far_field_by_cell then lays the table out
-// by cell for the culled light kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option
-// made by the host, is the patch count rounded up to eight; the padding holds zeros).
+// sides (src/light/far_field_margin.hpp). far_field_by_cell then lays the table out by cell for the culled light
+// kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option made by the host, is the
+// patch count rounded up to eight; the padding holds zeros).
 #include "voxel_grid.clh"
 
 // Midpoint rule along `direction` from `start` metres beyond each lane's cell centre, at least one sample per cell
