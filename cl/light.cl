@@ -3,7 +3,7 @@
 // patches: (N(h,v), S(h,v)); b0: B0 per patch. Output per receiver: (light vector, light).
 // Seed 000's shading of one receiving leaf ball, shared by the exact and the culled light kernels.
 // Compile-time constants (build options): SKY_BANDS (V), SKY_SECTORS (H), AXIS_STRIDE (below), FAR_ROW
-// (far_field.cl), and
+// (far_field.cl), SCAN_BATCHES (shade_by_tile_candidates), and
 // BALANCED_LIGHT_FRACTION, made by the host from light_sum.hpp's balanced_light_fraction (the one copy: both
 // backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
@@ -24,6 +24,9 @@
 // padding entries, so that eight patches read from any patch of the sky stay inside the arrays.
 #if AXIS_STRIDE < PATCH_COUNT + 7
 #error "AXIS_STRIDE leaves no room for a run of eight patches from the last one"
+#endif
+#if SCAN_BATCHES < 1
+#error "SCAN_BATCHES: the tile scan windows at least one batch at a time"
 #endif
 #if FAR_ROW > AXIS_STRIDE || FAR_ROW % 8 != 0
 #error "far_field_attenuate writes whole runs of eight patches of a FAR_ROW into log_b"
@@ -161,8 +164,8 @@ typedef struct {
   int v_lo[8], v_hi[8], h_lo[8], h_hi[8], inside[8];
 } BatchWindows;
 
-inline void batch_windows(const OccluderBatch* batch, BatchWindows* window) {
-  const float8 dx = vload8(0, batch->x), dy = vload8(0, batch->y), dz = vload8(0, batch->z), r = vload8(0, batch->r);
+// The windows of eight balls at offsets (dx, dy, dz) with radii r, one in each lane.
+inline void lane_windows(float8 dx, float8 dy, float8 dz, float8 r, BatchWindows* window) {
   const float8 dist2 = dx * dx + dy * dy + dz * dz;
   const float8 inverse_dist = rsqrt(dist2);
   const float8 sin_disc = r * inverse_dist;  // sine of the disc's half-angle
@@ -189,43 +192,33 @@ inline void batch_windows(const OccluderBatch* batch, BatchWindows* window) {
   vstore8(inside, 0, window->inside);
 }
 
-// Adds log(t) to every patch whose centre ray hits a ball of the batch.
-inline void shade_by_batch(float* log_b, __global const float* axes, const OccluderBatch* batch, float log_t) {
-  BatchWindows window;
-  batch_windows(batch, &window);
+inline void batch_windows(const OccluderBatch* batch, BatchWindows* window) {
+  lane_windows(vload8(0, batch->x), vload8(0, batch->y), vload8(0, batch->z), vload8(0, batch->r), window);
+}
+
+// Adds log(t) to every patch whose centre ray hits a ball of the batch, its windows found (batch_windows).
+inline void shade_by_windows(float* log_b, __global const float* axes, const OccluderBatch* batch,
+                             const BatchWindows* window, float log_t) {
   for (int l = 0; l < batch->count; ++l) {
-    if (window.inside[l]) {
+    if (window->inside[l]) {
       for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
       continue;
     }
     const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
     const float r2 = batch->r[l] * batch->r[l];
-    if (shade_narrow(log_b, 0, axes, window.v_lo[l], window.v_hi[l], window.h_lo[l], window.h_hi[l], d, r2, log_t))
+    if (shade_narrow(log_b, 0, axes, window->v_lo[l], window->v_hi[l], window->h_lo[l], window->h_hi[l], d, r2,
+                     log_t))
       continue;
-    for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
-      shade_band(log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
+    for (int v = window->v_lo[l]; v <= window->v_hi[l]; ++v)
+      shade_band(log_b, axes, v, window->h_lo[l], window->h_hi[l], d, r2, log_t);
   }
 }
 
-// The same on two skies at once: each ball's window is found once and its hits shade both (light_culled_and_alone:
-// a ball of the receiver's own tree within the cut-off shades the tree alone's sky and the stand's).
-inline void shade_by_batch_twice(float* log_b, float* other_log_b, __global const float* axes,
-                                 const OccluderBatch* batch, float log_t) {
+// Adds log(t) to every patch whose centre ray hits a ball of the batch.
+inline void shade_by_batch(float* log_b, __global const float* axes, const OccluderBatch* batch, float log_t) {
   BatchWindows window;
   batch_windows(batch, &window);
-  for (int l = 0; l < batch->count; ++l) {
-    if (window.inside[l]) {
-      for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t, other_log_b[p] += log_t;
-      continue;
-    }
-    const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
-    const float r2 = batch->r[l] * batch->r[l];
-    if (shade_narrow(log_b, other_log_b, axes, window.v_lo[l], window.v_hi[l], window.h_lo[l], window.h_hi[l], d, r2,
-                     log_t))
-      continue;
-    for (int v = window.v_lo[l]; v <= window.v_hi[l]; ++v)
-      shade_band_twice(log_b, other_log_b, axes, v, window.h_lo[l], window.h_hi[l], d, r2, log_t);
-  }
+  shade_by_windows(log_b, axes, batch, &window, log_t);
 }
 
 // Shades the receiver by the balls in the batch, if any, and empties it.
@@ -392,15 +385,21 @@ __kernel void tile_entries(__global const float4* balls, __global const int* occ
 // own; the one pass: the tree of each entry and the receiver's tree) shade log_b, eight at a time, in the order of the
 // list.
 // Without a branch on the distance: each of the eight entries' places is written into the next free slot of `held`,
-// and only those kept claim theirs; once eight are held, they go to the batch. Every hit adds the same log t, so
-// neither this order nor the shells' changes a patch's sum.
-inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __global const float* entries,
-                                     int entry_stride, __global const int* entry_tag, int excluded_tag, int2 scan,
-                                     float3 centre, float cutoff2, __global const float* axes, float log_t) {
+// and only those kept claim theirs; once SCAN_BATCHES batches of eight are held, their windows are found one batch
+// after the other and then their patches shaded. On a CPU two batches at a time (the host's choice) let the square
+// roots and divisions of the second batch's windows run while the first's wait on theirs, where one batch's windows
+// stalled the core (docs/performance.md "Two batches' windows at a time, and the own tree read in lanes"). Every hit
+// adds the same log t, so neither this order nor the shells' changes a patch's sum.
+inline void shade_by_tile_candidates(float* log_b, __global const float* entries, int entry_stride,
+                                     __global const int* entry_tag, int excluded_tag, int2 scan, float3 centre,
+                                     float cutoff2, __global const float* axes, float log_t) {
 #pragma OPENCL FP_CONTRACT OFF
   const int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
-  int held[16];
+  int held[8 * SCAN_BATCHES + 8];
   int count = 0;
+  OccluderBatch batches[SCAN_BATCHES];
+  BatchWindows windows[SCAN_BATCHES];
+  for (int b = 0; b < SCAN_BATCHES; ++b) batch_clear(&batches[b]);
   for (int k = scan.x; k < scan.y; k += 8) {
     const float8 dx = vload8(0, entries + k) - centre.x;
     const float8 dy = vload8(0, entries + entry_stride + k) - centre.y;
@@ -412,15 +411,18 @@ inline void shade_by_tile_candidates(float* log_b, OccluderBatch* batch, __globa
     int kept[8];
     vstore8(keep, 0, kept);
     for (int l = 0; l < 8; ++l) held[count] = k + l, count -= kept[l];
-    if (count >= 8) {
-      batch_fill(batch, entries, entry_stride, held, 8, centre);
-      batch_finish(batch, log_b, axes, log_t);
-      count -= 8;
-      for (int l = 0; l < count; ++l) held[l] = held[8 + l];
+    if (count >= 8 * SCAN_BATCHES) {
+      for (int b = 0; b < SCAN_BATCHES; ++b) batch_fill(&batches[b], entries, entry_stride, held + 8 * b, 8, centre);
+      for (int b = 0; b < SCAN_BATCHES; ++b) batch_windows(&batches[b], &windows[b]);
+      for (int b = 0; b < SCAN_BATCHES; ++b) shade_by_windows(log_b, axes, &batches[b], &windows[b], log_t);
+      count -= 8 * SCAN_BATCHES;
+      for (int l = 0; l < count; ++l) held[l] = held[8 * SCAN_BATCHES + l];
     }
   }
-  batch_fill(batch, entries, entry_stride, held, count, centre);
-  batch_finish(batch, log_b, axes, log_t);
+  for (int first = 0; first < count; first += 8) {
+    batch_fill(&batches[0], entries, entry_stride, held + first, min(count - first, 8), centre);
+    batch_finish(&batches[0], log_b, axes, log_t);
+  }
 }
 
 // Culled: receivers come in tile order; each reads the part of its tile's candidate list (CSR) that can hold its
@@ -443,11 +445,108 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   const float cutoff2 = cutoff * cutoff;
   float log_b[AXIS_STRIDE];
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = 0.0f;
-  OccluderBatch batch;
-  batch_clear(&batch);
-  shade_by_tile_candidates(log_b, &batch, entries, entry_stride, entry_tag, self, scan, centre, cutoff2, axes, log_t);
+  shade_by_tile_candidates(log_b, entries, entry_stride, entry_tag, self, scan, centre, cutoff2, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
+}
+
+// One ball of the receiver's own tree, at offset d in the tree's frame, with its window: it shades the tree alone's
+// sky, and the stand's (`stand_log_b`, or 0 for a ball beyond the cut-off) by the same hits.
+__attribute__((always_inline)) inline void shade_by_own_ball(float* alone_log_b, float* stand_log_b,
+                                                            __global const float* axes, float3 d, float r,
+                                                            int inside, int v_lo, int v_hi, int h_lo, int h_hi,
+                                                            float log_t) {
+  if (inside) {
+    for (int p = 0; p < PATCH_COUNT; ++p) alone_log_b[p] += log_t;
+    if (stand_log_b)
+      for (int p = 0; p < PATCH_COUNT; ++p) stand_log_b[p] += log_t;
+    return;
+  }
+  const float r2 = r * r;
+  if (shade_narrow(alone_log_b, stand_log_b, axes, v_lo, v_hi, h_lo, h_hi, d, r2, log_t)) return;
+  for (int v = v_lo; v <= v_hi; ++v) {
+    if (stand_log_b)
+      shade_band_twice(alone_log_b, stand_log_b, axes, v, h_lo, h_hi, d, r2, log_t);
+    else
+      shade_band(alone_log_b, axes, v, h_lo, h_hi, d, r2, log_t);
+  }
+}
+
+// A run of eight balls of the receiver's own tree, each as its offset from the receiver in the tree's frame, whether
+// to shade it (not shaded by an earlier run, in the tree, not the receiver itself), whether it lies within the
+// cut-off, and its window.
+typedef struct {
+  float x[8], y[8], z[8], r[8];
+  int shaded[8], within[8];
+  BatchWindows window;
+} OwnRun;
+
+// The run of group_balls[j0 .. j0 + 8), read in lanes straight from the buffer (from `first`, ball by ball, for a
+// tree of fewer than eight balls, whose lanes past its end are left out). Balls before `done` are left out too.
+__attribute__((always_inline)) inline void own_run(OwnRun* run, __global const float4* group_balls, int j0, int first,
+                                                   int end, int done, int self, float3 own_centre, float cutoff2) {
+#pragma OPENCL FP_CONTRACT OFF
+  float8 bx, by, bz, br;
+  if (end - first >= 8) {
+    const float16 a = vload16(0, (__global const float*)(group_balls + j0));
+    const float16 b = vload16(0, (__global const float*)(group_balls + j0 + 4));
+    bx = (float8)(a.s048c, b.s048c), by = (float8)(a.s159d, b.s159d);
+    bz = (float8)(a.s26ae, b.s26ae), br = (float8)(a.s37bf, b.s37bf);
+  } else {
+    for (int l = 0; l < 8; ++l) {
+      const float4 ball = first + l < end ? group_balls[first + l] : (float4)(own_centre, 1.0f);
+      run->x[l] = ball.x, run->y[l] = ball.y, run->z[l] = ball.z, run->r[l] = ball.w;
+    }
+    bx = vload8(0, run->x), by = vload8(0, run->y), bz = vload8(0, run->z), br = vload8(0, run->r);
+  }
+  const int8 j = j0 + (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  const int8 shaded = j >= done && j < end && j != self;
+  const float8 dx = select((float8)(1.0f), bx - own_centre.x, shaded);  // lanes left out stay finite
+  const float8 dy = select((float8)(1.0f), by - own_centre.y, shaded);
+  const float8 dz = select((float8)(1.0f), bz - own_centre.z, shaded);
+  // each square rounded, then summed: dot(d, d) <= cutoff2 as the ball-by-ball loop before it decided (same tables)
+  const int8 within = dx * dx + dy * dy + dz * dz <= cutoff2;
+  lane_windows(dx, dy, dz, br, &run->window);
+  vstore8(dx, 0, run->x), vstore8(dy, 0, run->y), vstore8(dz, 0, run->z), vstore8(br, 0, run->r);
+  vstore8(shaded, 0, run->shaded), vstore8(within, 0, run->within);
+}
+
+// Shades both skies by the balls of a run: the tree alone's by each, the stand's by those within the cut-off.
+__attribute__((always_inline)) inline void shade_by_own_run(float* alone_log_b, float* stand_log_b,
+                                                           __global const float* axes, const OwnRun* run,
+                                                           float log_t) {
+  for (int l = 0; l < 8; ++l) {
+    if (!run->shaded[l]) continue;
+    shade_by_own_ball(alone_log_b, run->within[l] ? stand_log_b : 0, axes, (float3)(run->x[l], run->y[l], run->z[l]),
+                      run->r[l], run->window.inside[l], run->window.v_lo[l], run->window.v_hi[l],
+                      run->window.h_lo[l], run->window.h_hi[l], log_t);
+  }
+}
+
+// The receiver's own tree, group_balls[first .. end) but the receiver `self`, in runs of eight read in lanes, two runs
+// at a time while sixteen balls remain (their windows' square roots and divisions overlap, as the tile scan's two
+// batches do). A tree of eight balls or more ends with a run of its last eight, its lanes already shaded left out.
+// Every ball is windowed once, in lanes, and shades the skies it belongs to: before, each was copied ball by ball
+// into a batch of near and one of far balls, whose windows then read the copies back as vectors, stalling on the
+// copies (docs/performance.md "Two batches' windows at a time, and the own tree read in lanes"). Every hit adds the
+// same log t, so the order does not change a patch's sum.
+inline void shade_by_own_tree(float* alone_log_b, float* stand_log_b, __global const float4* group_balls, int first,
+                              int end, int self, float cutoff2, __global const float* axes, float log_t) {
+  const float3 own_centre = group_balls[self].xyz;
+  OwnRun run, next;
+  int done = first;
+  for (; end - done >= 16; done += 16) {
+    own_run(&run, group_balls, done, first, end, done, self, own_centre, cutoff2);
+    own_run(&next, group_balls, done + 8, first, end, done, self, own_centre, cutoff2);
+    shade_by_own_run(alone_log_b, stand_log_b, axes, &run, log_t);
+    shade_by_own_run(alone_log_b, stand_log_b, axes, &next, log_t);
+  }
+  while (done < end) {
+    const int j0 = end - first >= 8 ? min(done, end - 8) : first;
+    own_run(&run, group_balls, j0, first, end, done, self, own_centre, cutoff2);
+    shade_by_own_run(alone_log_b, stand_log_b, axes, &run, log_t);
+    done = j0 + 8;
+  }
 }
 
 // light_culled and light_each_alone in one pass (the stand's light and the open-grown light of its trees): the
@@ -476,37 +575,12 @@ __kernel void light_culled_and_alone(__global const float4* balls, __global cons
   const float cutoff2 = cutoff * cutoff;
   float log_b[AXIS_STRIDE], alone_log_b[AXIS_STRIDE];
   for (int p = 0; p < AXIS_STRIDE; ++p) log_b[p] = alone_log_b[p] = 0.0f;
-  // The own tree in two batches: the balls within the cut-off shade both skies, those beyond the tree alone's only.
-  // Without a branch on the distance: each ball is written into both batches and counted in one (as
-  // shade_by_tile_candidates holds candidates).
-  OccluderBatch near, far;
-  batch_clear(&near);
-  batch_clear(&far);
-  const float3 own_centre = group_balls[self].xyz;
-  for (int j = group_start[g]; j < group_start[g + 1]; ++j) {
-    if (j == self) continue;
-    const float4 ball = group_balls[j];
-    const float3 d = ball.xyz - own_centre;
-    near.x[near.count] = d.x, near.y[near.count] = d.y, near.z[near.count] = d.z, near.r[near.count] = ball.w;
-    far.x[far.count] = d.x, far.y[far.count] = d.y, far.z[far.count] = d.z, far.r[far.count] = ball.w;
-    const int within = dot(d, d) <= cutoff2 ? 1 : 0;
-    near.count += within;
-    far.count += 1 - within;
-    if (near.count == 8) {
-      shade_by_batch_twice(alone_log_b, log_b, axes, &near, log_t);
-      near.count = 0;
-    }
-    if (far.count == 8) batch_finish(&far, alone_log_b, axes, log_t);
-  }
-  if (near.count > 0) shade_by_batch_twice(alone_log_b, log_b, axes, &near, log_t);
-  batch_finish(&far, alone_log_b, axes, log_t);
+  shade_by_own_tree(alone_log_b, log_b, group_balls, group_start[g], group_start[g + 1], self, cutoff2, axes, log_t);
   out_alone[slot] = light_sample(alone_log_b, patches, b0_alone);
   // The other trees, as light_culled scans them.
   const int2 scan = receiver_scan[slot];
   const float3 centre = balls[self].xyz;
-  OccluderBatch batch;
-  batch_clear(&batch);
-  shade_by_tile_candidates(log_b, &batch, entries, entry_stride, entry_tag, g, scan, centre, cutoff2, axes, log_t);
+  shade_by_tile_candidates(log_b, entries, entry_stride, entry_tag, g, scan, centre, cutoff2, axes, log_t);
   far_field_attenuate(log_b, far_by_cell, centre, grid_origin.xyz, grid_cell.xyz, grid_dims, periodic, one_minus_t);
   out[slot] = light_sample(log_b, patches, b0);
 }

@@ -193,6 +193,12 @@ SkyData sky_data_of(const CelestialSphere& sky) {
   return data;
 }
 
+// Batches of eight near-field occluders whose windows the tile scan finds together (cl/light.cl,
+// shade_by_tile_candidates). Two on a CPU, where the second batch's square roots and divisions run while the first's
+// wait on theirs (docs/performance.md "Two batches' windows at a time, and the own tree read in lanes"); one on a GPU,
+// whose work items would hold the second batch in scarce private memory, and where two were never measured.
+int scan_batches(const compute::OpenCLContext& device) { return (device.type & CL_DEVICE_TYPE_CPU) ? 2 : 1; }
+
 }  // namespace
 
 struct OpenCLLightSolver::Device {
@@ -227,6 +233,7 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
                            .define("SKY_SECTORS", parameters_.sky_sectors)
                            .define("AXIS_STRIDE", int(axis_stride(parameters_.sky_bands * parameters_.sky_sectors)))
                            .define("FAR_ROW", int(far_row(parameters_.sky_bands * parameters_.sky_sectors)))
+                           .define("SCAN_BATCHES", scan_batches(device))
                            .define("BALANCED_LIGHT_FRACTION", balanced_light_fraction);
   const std::string source = compute::kernel_source("far_field.cl") + compute::kernel_source("light.cl");
   device_->program = compute::build_program(device_->cl, source, options.text());
