@@ -196,22 +196,37 @@ inline void batch_windows(const OccluderBatch* batch, BatchWindows* window) {
   lane_windows(vload8(0, batch->x), vload8(0, batch->y), vload8(0, batch->z), vload8(0, batch->r), window);
 }
 
+// Adds log(t) to every patch of `log_b` whose centre ray hits the ball at offset d, radius r, whose window is v_lo ..
+// v_hi, h_lo .. h_hi (`inside`: the receiver sits in it), and to the same patches of `other_log_b` unless it is 0
+// (light_culled_and_alone: a ball of the receiver's own tree within the cut-off shades the tree alone's sky and the
+// stand's).
+__attribute__((always_inline)) inline void shade_by_windowed_ball(float* log_b, float* other_log_b,
+                                                                 __global const float* axes, float3 d, float r,
+                                                                 int inside, int v_lo, int v_hi, int h_lo, int h_hi,
+                                                                 float log_t) {
+  if (inside) {
+    for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
+    if (other_log_b)
+      for (int p = 0; p < PATCH_COUNT; ++p) other_log_b[p] += log_t;
+    return;
+  }
+  const float r2 = r * r;
+  if (shade_narrow(log_b, other_log_b, axes, v_lo, v_hi, h_lo, h_hi, d, r2, log_t)) return;
+  for (int v = v_lo; v <= v_hi; ++v) {
+    if (other_log_b)
+      shade_band_twice(log_b, other_log_b, axes, v, h_lo, h_hi, d, r2, log_t);
+    else
+      shade_band(log_b, axes, v, h_lo, h_hi, d, r2, log_t);
+  }
+}
+
 // Adds log(t) to every patch whose centre ray hits a ball of the batch, its windows found (batch_windows).
 inline void shade_by_windows(float* log_b, __global const float* axes, const OccluderBatch* batch,
                              const BatchWindows* window, float log_t) {
-  for (int l = 0; l < batch->count; ++l) {
-    if (window->inside[l]) {
-      for (int p = 0; p < PATCH_COUNT; ++p) log_b[p] += log_t;
-      continue;
-    }
-    const float3 d = (float3)(batch->x[l], batch->y[l], batch->z[l]);
-    const float r2 = batch->r[l] * batch->r[l];
-    if (shade_narrow(log_b, 0, axes, window->v_lo[l], window->v_hi[l], window->h_lo[l], window->h_hi[l], d, r2,
-                     log_t))
-      continue;
-    for (int v = window->v_lo[l]; v <= window->v_hi[l]; ++v)
-      shade_band(log_b, axes, v, window->h_lo[l], window->h_hi[l], d, r2, log_t);
-  }
+  for (int l = 0; l < batch->count; ++l)
+    shade_by_windowed_ball(log_b, 0, axes, (float3)(batch->x[l], batch->y[l], batch->z[l]), batch->r[l],
+                           window->inside[l], window->v_lo[l], window->v_hi[l], window->h_lo[l], window->h_hi[l],
+                           log_t);
 }
 
 // Adds log(t) to every patch whose centre ray hits a ball of the batch.
@@ -450,28 +465,6 @@ __kernel void light_culled(__global const float4* balls, __global const int* rec
   out[slot] = light_sample(log_b, patches, b0);
 }
 
-// One ball of the receiver's own tree, at offset d in the tree's frame, with its window: it shades the tree alone's
-// sky, and the stand's (`stand_log_b`, or 0 for a ball beyond the cut-off) by the same hits.
-__attribute__((always_inline)) inline void shade_by_own_ball(float* alone_log_b, float* stand_log_b,
-                                                            __global const float* axes, float3 d, float r,
-                                                            int inside, int v_lo, int v_hi, int h_lo, int h_hi,
-                                                            float log_t) {
-  if (inside) {
-    for (int p = 0; p < PATCH_COUNT; ++p) alone_log_b[p] += log_t;
-    if (stand_log_b)
-      for (int p = 0; p < PATCH_COUNT; ++p) stand_log_b[p] += log_t;
-    return;
-  }
-  const float r2 = r * r;
-  if (shade_narrow(alone_log_b, stand_log_b, axes, v_lo, v_hi, h_lo, h_hi, d, r2, log_t)) return;
-  for (int v = v_lo; v <= v_hi; ++v) {
-    if (stand_log_b)
-      shade_band_twice(alone_log_b, stand_log_b, axes, v, h_lo, h_hi, d, r2, log_t);
-    else
-      shade_band(alone_log_b, axes, v, h_lo, h_hi, d, r2, log_t);
-  }
-}
-
 // A run of eight balls of the receiver's own tree, each as its offset from the receiver in the tree's frame, whether
 // to shade it (not shaded by an earlier run, in the tree, not the receiver itself), whether it lies within the
 // cut-off, and its window.
@@ -517,9 +510,9 @@ __attribute__((always_inline)) inline void shade_by_own_run(float* alone_log_b, 
                                                            float log_t) {
   for (int l = 0; l < 8; ++l) {
     if (!run->shaded[l]) continue;
-    shade_by_own_ball(alone_log_b, run->within[l] ? stand_log_b : 0, axes, (float3)(run->x[l], run->y[l], run->z[l]),
-                      run->r[l], run->window.inside[l], run->window.v_lo[l], run->window.v_hi[l],
-                      run->window.h_lo[l], run->window.h_hi[l], log_t);
+    shade_by_windowed_ball(alone_log_b, run->within[l] ? stand_log_b : 0, axes,
+                           (float3)(run->x[l], run->y[l], run->z[l]), run->r[l], run->window.inside[l],
+                           run->window.v_lo[l], run->window.v_hi[l], run->window.h_lo[l], run->window.h_hi[l], log_t);
   }
 }
 
