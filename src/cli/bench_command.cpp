@@ -110,7 +110,7 @@ void add_bench_light_command(CLI::App& bench) {
                         std::string("Cell edges beyond the cut-off where the far field takes over (with the bias "
                                     "correction)") +
                             overrides_stand)
-          ->check(CLI::Range(0.0, double(max_far_field_hand_over_cells)))
+          ->check(amount_between_check(0.0, max_far_field_hand_over_cells))
           ->capture_default_str();
   overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
                                         std::string("Treat the plot as a torus") + overrides_stand);
@@ -138,7 +138,7 @@ void add_bench_light_command(CLI::App& bench) {
   auto* evaluations = light->add_option("--evaluations", options->evaluations,
                     "Evaluations of the OpenCL culled + far-field solver, one after another with one solver (the "
                     "first is the row's, the later ones are listed after it: they reuse the buffers it keeps)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(1000)))
+      ->check(whole_number_check(1, 1000))
       ->capture_default_str();
   light->add_option("-o,--output", *output, "Also write the JSON to this file");
   light->callback([options, scenarios, output, overrides, balls, evaluations] {

@@ -1,13 +1,16 @@
 #pragma once
 // The checks of the options that take a count or an amount. CLI11 2.1's PositiveNumber refuses 0 with "Value 0 not in
 // range 0.000000 to 179769313486231570814527...000000" (its lower end is the smallest positive double printed to six
-// places, its upper end every digit of the largest), and a word such as "abc" with the same sentence; these say what
-// is expected and what was given, as the scenario's own checks do.
+// places, its upper end every digit of the largest), and a word such as "abc" with the same sentence; its Range prints
+// a range of doubles to six places ("Value 99 not in range 0.000000 to 4.000000") and lets "nan" through. These say
+// what is expected and what was given, as the scenario's own checks do.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <cstdlib>
 #include <string>
+
+#include <fmt/format.h>
 
 namespace heliostand {
 
@@ -36,6 +39,33 @@ inline CLI::Validator positive_amount_check() {
                                                                : "a number > 0 is expected, got " + value;
       },
       "X > 0");
+}
+
+// A count within limits ("--evaluations: a whole number in 1..1000 is expected, got 0").
+inline CLI::Validator whole_number_check(unsigned long long minimum, unsigned long long maximum) {
+  return CLI::Validator(
+      [minimum, maximum](std::string& value) -> std::string {
+        const bool digits = !value.empty() && value.size() <= 19 && value.find_first_not_of("0123456789") == std::string::npos;
+        const bool within = digits && std::stoull(value) >= minimum && std::stoull(value) <= maximum;
+        return within ? std::string{}
+                      : fmt::format("a whole number in {}..{} is expected, got {}", minimum, maximum, value);
+      },
+      fmt::format("N in {}..{}", minimum, maximum));
+}
+
+// An amount within limits, both included ("--far-field-hand-over: a number in 0..4 is expected, got 99"), with the
+// limits written as the scenario's check writes them, shortest first.
+inline CLI::Validator amount_between_check(double minimum, double maximum) {
+  return CLI::Validator(
+      [minimum, maximum](std::string& value) -> std::string {
+        char* end = nullptr;
+        const double number = value.empty() ? 0.0 : std::strtod(value.c_str(), &end);
+        const bool parsed = !value.empty() && end == value.c_str() + value.size();
+        return parsed && std::isfinite(number) && number >= minimum && number <= maximum
+                   ? std::string{}
+                   : fmt::format("a number in {}..{} is expected, got {}", minimum, maximum, value);
+      },
+      fmt::format("X in {}..{}", minimum, maximum));
 }
 
 }  // namespace heliostand

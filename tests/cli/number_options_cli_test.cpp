@@ -1,6 +1,7 @@
-// The options that take a count or an amount above zero say what they expect and what they were given
-// (src/cli/number_checks.hpp), not CLI11 2.1's "Value 0 not in range 0.000000 to 179769313486231570...000000", and an
-// unsigned limit is not wrapped from -1 to 2^64 - 1: exit 2, before anything runs.
+// The options that take a count or an amount say what they expect and what they were given
+// (src/cli/number_checks.hpp), not CLI11 2.1's "Value 0 not in range 0.000000 to 179769313486231570...000000" or
+// "Value 99 not in range 0.000000 to 4.000000", and an unsigned limit is not wrapped from -1 to 2^64 - 1: exit 2,
+// before anything runs.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +35,19 @@ TEST(NumberChecks, AnAmountIsAFiniteNumberAboveZero) {
     EXPECT_EQ(check(positive_amount_check(), bad), "a number > 0 is expected, got " + bad) << bad;
 }
 
+TEST(NumberChecks, ACountWithinLimitsIncludesBoth) {
+  for (const std::string good : {"1", "1000", "0500"}) EXPECT_EQ(check(whole_number_check(1, 1000), good), "") << good;
+  for (const std::string bad : {"0", "1001", "-1", "1.5", "abc", "", "99999999999999999999"})
+    EXPECT_EQ(check(whole_number_check(1, 1000), bad), "a whole number in 1..1000 is expected, got " + bad) << bad;
+}
+
+TEST(NumberChecks, AnAmountWithinLimitsIncludesBothAndIsFinite) {
+  for (const std::string good : {"0", "4", "0.5", "2e0"}) EXPECT_EQ(check(amount_between_check(0, 4), good), "") << good;
+  for (const std::string bad : {"-0.5", "4.5", "nan", "inf", "abc", "", "1x"})
+    EXPECT_EQ(check(amount_between_check(0, 4), bad), "a number in 0..4 is expected, got " + bad) << bad;
+  EXPECT_EQ(check(amount_between_check(0.25, 2.5), "3"), "a number in 0.25..2.5 is expected, got 3");
+}
+
 // Every option that carries one of the checks, through the program as a user runs it.
 TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
   const std::string tiny = source_path("stands/tiny/scenario.toml").string();
@@ -57,6 +71,9 @@ TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
       {"bench light --balls 10 --opencl-exact-max 2.5", "--opencl-exact-max: " + limit + "2.5"},
       {"bench light --balls 10 --cutoff 0", "--cutoff: " + amount + "0"},
       {"bench light --balls 10 --far-field-cell inf", "--far-field-cell: " + amount + "inf"},
+      {"bench light --balls 10 --evaluations 0", "--evaluations: a whole number in 1..1000 is expected, got 0"},
+      {"bench light --balls 10 --far-field-hand-over 99", "--far-field-hand-over: a number in 0..4 is expected, got 99"},
+      {"bench light --balls 10 --far-field-hand-over nan", "--far-field-hand-over: a number in 0..4 is expected, got nan"},
   };
   // (--balls 10: were a refusal to regress, the bench would run in a second, not for hours.)
   for (const Case& c : cases) {
@@ -64,6 +81,7 @@ TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
     EXPECT_EQ(run.status, 2) << c.arguments << "\n" << run.output;
     EXPECT_NE(run.output.find(c.refusal), std::string::npos) << c.arguments << "\n" << run.output;
     EXPECT_EQ(run.output.find("179769"), std::string::npos) << c.arguments << "\n" << run.output;
+    EXPECT_EQ(run.output.find("0.000000"), std::string::npos) << c.arguments << "\n" << run.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out)) << "a refused grow wrote its output folder";
 }
