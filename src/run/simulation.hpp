@@ -29,6 +29,16 @@ struct SimulationOptions {
   std::function<void(const Stand&, int year)> observe_year;
 };
 
+// What one simulated year cost (`heliostand bench stand`'s `by_year`): where a run's time goes as the stand grows.
+struct YearCost {
+  int year = 0, stand_age = 0;
+  long trees_alive = 0;                                        // at the end of the year
+  std::vector<std::pair<std::string, double>> stage_seconds;  // this year's part of each stage of the run's clock
+  // This year's stand solve: its parts (as SimulationSummary's sums) and the near-field candidates a ball scanned.
+  double light_search_seconds = 0, light_far_field_seconds = 0, light_shading_seconds = 0;
+  double light_tile_candidates_per_ball = 0;
+};
+
 struct SimulationSummary {
   int first_stand_age = 0, last_stand_age = 0;
   int trees_alive = 0, trees_removed = 0, trees_dead = 0;
@@ -47,6 +57,9 @@ struct SimulationSummary {
   // own years only): the near-field search (k-d tree, tile lists), the far field (density and optical-depth table)
   // and the shading (the kernel, with the trees alone where the solver lights them in the same pass).
   double light_search_seconds = 0, light_far_field_seconds = 0, light_shading_seconds = 0;
+  // Each year of the loop (year 0: the surveyed stand lit and coupled; a resumed run: its own years), in order.
+  // The stages before the loop (establishment, the roots' spin-up) belong to no year.
+  std::vector<YearCost> by_year;
 };
 
 SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options);

@@ -43,9 +43,31 @@ std::size_t heap_in_use_bytes() {
   return heap.uordblks + heap.hblkhd;
 }
 
-nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary& run, std::size_t heap_at_end) {
+nlohmann::ordered_json stage_object(const std::vector<std::pair<std::string, double>>& stage_seconds) {
   nlohmann::ordered_json stages = nlohmann::ordered_json::object();
-  for (const auto& [stage, seconds] : run.stage_seconds) stages[stage] = seconds;
+  for (const auto& [stage, seconds] : stage_seconds) stages[stage] = seconds;
+  return stages;
+}
+
+nlohmann::ordered_json light_parts(double search, double far_field, double shading) {
+  return {{"search", search}, {"far_field", far_field}, {"shading", shading}};
+}
+
+// Each year's cost, in the order simulated: how the time per year grows with the stand (docs/performance.md).
+nlohmann::ordered_json by_year(const std::vector<YearCost>& years) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const YearCost& year : years)
+    list.push_back({{"year", year.year},
+                    {"stand_age", year.stand_age},
+                    {"trees_alive", year.trees_alive},
+                    {"stage_seconds", stage_object(year.stage_seconds)},
+                    {"light_parts_seconds",
+                     light_parts(year.light_search_seconds, year.light_far_field_seconds, year.light_shading_seconds)},
+                    {"light_tile_candidates_per_ball", year.light_tile_candidates_per_ball}});
+  return list;
+}
+
+nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary& run, std::size_t heap_at_end) {
   const std::size_t peak = peak_resident_bytes();
   const std::size_t trees = scenario.survey.trees.size();
   nlohmann::ordered_json json;
@@ -62,7 +84,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["trees_removed"] = run.trees_removed;
   json["trees_dead"] = run.trees_dead;
   json["tree_years"] = run.tree_years;
-  json["stage_seconds"] = stages;
+  json["stage_seconds"] = stage_object(run.stage_seconds);
   json["total_seconds"] = run.wall_seconds;
   json["tree_years_per_second"] = run.wall_seconds > 0 ? run.tree_years / run.wall_seconds : 0.0;
   json["leaf_balls_at_end"] = run.leaf_balls;
@@ -70,12 +92,12 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["root_segments_at_end"] = run.root_segments;
   json["light_tile_candidates_per_ball"] = run.light_tile_candidates_per_ball;
   json["light_far_field_cell_m_max"] = run.light_far_field_cell_m_max;
-  json["light_parts_seconds"] = {{"search", run.light_search_seconds},
-                                 {"far_field", run.light_far_field_seconds},
-                                 {"shading", run.light_shading_seconds}};
+  json["light_parts_seconds"] = light_parts(run.light_search_seconds, run.light_far_field_seconds,
+                                            run.light_shading_seconds);
   json["heap_in_use_at_end_bytes"] = heap_at_end;
   json["peak_memory_bytes"] = peak;
   json["peak_memory_mib"] = static_cast<double>(peak) / (1024.0 * 1024.0);
+  json["by_year"] = by_year(run.by_year);
   return json;
 }
 

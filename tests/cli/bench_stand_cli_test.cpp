@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
@@ -97,6 +98,44 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
 
 // The OpenCL solver discards a tile's occluders beyond each receiver's cut-off inside the kernel; the length of the
 // tile lists it scans (what sizes the light stage's candidate memory) must still reach the JSON.
+// by_year: each year of the loop once, in order, with its own part of every stage: the parts add up to the run's
+// totals, less what ran before the first year (establishment, the roots' spin-up).
+TEST(BenchStandCli, ReportsWhatEachYearCost) {
+  const fs::path folder = scratch_folder("bench-stand-by-year");
+  fs::create_directories(folder);
+  const fs::path file = folder / "bench.json";
+  const CliResult cli = run_cli("bench stand " + tiny + " --years 2 --device reference -o " + file.string() + " -q");
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  const nlohmann::json json = nlohmann::json::parse(read_text(file));
+  const auto& years = json.at("by_year");
+  ASSERT_EQ(years.size(), 3u) << "years 0 (the surveyed stand), 1 and 2";
+  std::map<std::string, double> stage_sum, part_sum;
+  for (std::size_t y = 0; y < years.size(); ++y) {
+    EXPECT_EQ(years[y].at("year"), static_cast<int>(y));
+    EXPECT_EQ(years[y].at("stand_age"), 20 + static_cast<int>(y));
+    EXPECT_EQ(years[y].at("trees_alive"), 8);
+    EXPECT_GT(years[y].at("light_tile_candidates_per_ball").get<double>(), 0.0);
+    double parts = 0;
+    for (const auto& [part, seconds] : years[y].at("light_parts_seconds").items()) {
+      EXPECT_GT(seconds.get<double>(), 0.0) << part << " in year " << y;
+      part_sum[part] += seconds.get<double>(), parts += seconds.get<double>();
+    }
+    EXPECT_LE(parts, years[y].at("stage_seconds").at("light").get<double>()) << "year " << y;
+    for (const auto& [stage, seconds] : years[y].at("stage_seconds").items()) {
+      EXPECT_GE(seconds.get<double>(), 0.0) << stage << " in year " << y;
+      stage_sum[stage] += seconds.get<double>();
+    }
+  }
+  EXPECT_GT(years[2].at("stage_seconds").at("growth").get<double>(), 0.0);
+  const auto& total = json.at("stage_seconds");
+  for (const char* stage : {"light", "light (open grown)", "growth", "light response", "output"})
+    EXPECT_NEAR(stage_sum[stage], total.at(stage).get<double>(), 1e-9) << stage << ": every second of it is a year's";
+  EXPECT_EQ(stage_sum["establishment"], 0.0) << "the survey's trees are established before the first year";
+  EXPECT_GT(total.at("roots").get<double>() - stage_sum["roots"], 0.0) << "the roots' spin-up precedes the first year";
+  for (const auto& [part, seconds] : json.at("light_parts_seconds").items())
+    EXPECT_NEAR(part_sum[part], seconds.get<double>(), 1e-9) << part;
+}
+
 TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
   if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
   const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
