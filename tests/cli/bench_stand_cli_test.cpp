@@ -1,4 +1,4 @@
-// `heliostand bench stand` (issue 16 item 1) as a user runs it, on the tiny stand for one year: the JSON's fields
+// `heliostand bench stand` (issue 16 item 1) as a user runs it, on the tiny stand for a year or two: the JSON's fields
 // and counts. Timings are only checked to be there, never against a bound (speed is measured by benchmarks, never
 // by timed unit tests).
 #include <gtest/gtest.h>
@@ -96,8 +96,6 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
 }
 
-// The OpenCL solver discards a tile's occluders beyond each receiver's cut-off inside the kernel; the length of the
-// tile lists it scans (what sizes the light stage's candidate memory) must still reach the JSON.
 // by_year: each year of the loop once, in order, with its own part of every stage: the parts add up to the run's
 // totals, less what ran before the first year (establishment, the roots' spin-up).
 TEST(BenchStandCli, ReportsWhatEachYearCost) {
@@ -136,6 +134,8 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
     EXPECT_NEAR(part_sum[part], seconds.get<double>(), 1e-9) << part;
 }
 
+// The OpenCL solver discards a tile's occluders beyond each receiver's cut-off inside the kernel; the length of the
+// tile lists it scans (what sizes the light stage's candidate memory) must still reach the JSON.
 TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
   if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
   const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
