@@ -8,18 +8,32 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 
 namespace heliostand {
 
+// The parses the checks share: a count is digits and nothing else; an amount is a finite number that strtod reads
+// whole.
+inline bool is_digits(const std::string& value) {
+  return !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+}
+inline std::optional<double> finite_amount(const std::string& value) {
+  if (value.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double number = std::strtod(value.c_str(), &end);
+  if (end != value.c_str() + value.size() || !std::isfinite(number)) return std::nullopt;
+  return number;
+}
+
 // A count: a whole number >= `minimum` written in digits ("--years: a whole number >= 1 is expected, got 0"). Without
 // it an unsigned option would store "-1" as 2^64 - 1 without a word.
 inline CLI::Validator whole_number_check(unsigned long long minimum = 1) {
   return CLI::Validator(
       [minimum](std::string& value) -> std::string {
-        const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        const bool digits = is_digits(value);
         // Past 19 digits a number is above any minimum; whether it fits the option's type is CLI11's own check.
         const bool enough = digits && (value.size() > 19 || std::stoull(value) >= minimum);
         return enough ? std::string{}
@@ -32,11 +46,8 @@ inline CLI::Validator whole_number_check(unsigned long long minimum = 1) {
 inline CLI::Validator positive_amount_check() {
   return CLI::Validator(
       [](std::string& value) -> std::string {
-        char* end = nullptr;
-        const double number = value.empty() ? 0.0 : std::strtod(value.c_str(), &end);
-        const bool parsed = !value.empty() && end == value.c_str() + value.size();
-        return parsed && std::isfinite(number) && number > 0.0 ? std::string{}
-                                                               : "a number > 0 is expected, got " + value;
+        const std::optional<double> number = finite_amount(value);
+        return number && *number > 0.0 ? std::string{} : "a number > 0 is expected, got " + value;
       },
       "X > 0");
 }
@@ -45,8 +56,10 @@ inline CLI::Validator positive_amount_check() {
 inline CLI::Validator whole_number_check(unsigned long long minimum, unsigned long long maximum) {
   return CLI::Validator(
       [minimum, maximum](std::string& value) -> std::string {
-        const bool digits = !value.empty() && value.size() <= 19 && value.find_first_not_of("0123456789") == std::string::npos;
-        const bool within = digits && std::stoull(value) >= minimum && std::stoull(value) <= maximum;
+        // At most 19 digits, so that stoull cannot overflow (past them a number is above any maximum).
+        const bool digits = is_digits(value) && value.size() <= 19;
+        const unsigned long long number = digits ? std::stoull(value) : 0;
+        const bool within = digits && number >= minimum && number <= maximum;
         return within ? std::string{}
                       : fmt::format("a whole number in {}..{} is expected, got {}", minimum, maximum, value);
       },
@@ -58,10 +71,8 @@ inline CLI::Validator whole_number_check(unsigned long long minimum, unsigned lo
 inline CLI::Validator amount_between_check(double minimum, double maximum) {
   return CLI::Validator(
       [minimum, maximum](std::string& value) -> std::string {
-        char* end = nullptr;
-        const double number = value.empty() ? 0.0 : std::strtod(value.c_str(), &end);
-        const bool parsed = !value.empty() && end == value.c_str() + value.size();
-        return parsed && std::isfinite(number) && number >= minimum && number <= maximum
+        const std::optional<double> number = finite_amount(value);
+        return number && *number >= minimum && *number <= maximum
                    ? std::string{}
                    : fmt::format("a number in {}..{} is expected, got {}", minimum, maximum, value);
       },

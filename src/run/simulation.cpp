@@ -111,19 +111,15 @@ void add_light_parts(const LightSolveStatistics& last_solve, SimulationSummary& 
   summary.light_shading_seconds += last_solve.evaluate_seconds;
 }
 
-// The year's part of each stage: the clock's totals after it less those before it.
-YearCost year_cost(int year, const Stand& stand, const std::vector<std::pair<std::string, double>>& before,
-                   const StageClock& clock, const LightSolveStatistics& solve) {
+// The year's part of each stage: the clock's totals after it less those before it (`before`, the clock as it stood).
+YearCost year_cost(int year, const Stand& stand, const StageClock& before, const StageClock& clock,
+                   const LightSolveStatistics& solve) {
   YearCost cost;
   cost.year = year;
   cost.stand_age = stand.stand_age();
   cost.trees_alive = living_tree_count(stand);
-  for (const auto& [stage, total] : clock.stages()) {
-    double earlier = 0;
-    for (const auto& [name, seconds] : before)
-      if (name == stage) earlier = seconds;
-    cost.stage_seconds.emplace_back(stage, total - earlier);
-  }
+  for (const auto& [stage, total] : clock.stages())
+    cost.stage_seconds.emplace_back(stage, total - before.seconds(stage));
   cost.light_search_seconds = solve.search_seconds;
   cost.light_far_field_seconds = solve.far_field_seconds;
   cost.light_shading_seconds = solve.evaluate_seconds;
@@ -190,7 +186,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   FarFieldCells far_field_cells(stand_light);
   SimulationSummary summary;
   for (int year = first_year; year <= scenario.run.years; ++year) {
-    const std::vector<std::pair<std::string, double>> before = clock.stages();
+    const StageClock before = clock;
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
     far_field_cells.after_year(solver->last_statistics(), stand.stand_age());
