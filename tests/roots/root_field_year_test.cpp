@@ -40,6 +40,29 @@ TEST(SegmentList, ViewsTheTreesOwnSegmentsWithoutCopying) {
   EXPECT_EQ(visited, 5u);
 }
 
+// Many trees, some without segments (their parts share a first index with the next): every index finds its own
+// segment, as the visit in order does. The segment grid's gather asks for them in cell order, out of index order.
+TEST(SegmentList, FindsEverySegmentAmongManyPartsSomeEmpty) {
+  std::vector<std::vector<RootSegment>> trees(61);
+  for (std::size_t t = 0; t < trees.size(); ++t) {
+    trees[t].resize(t % 4 == 1 ? 0 : (t * 7) % 13 + 1);
+    for (std::size_t k = 0; k < trees[t].size(); ++k) {
+      trees[t][k].start = {1.0 * t, 1.0 * k, 0.0};
+      trees[t][k].end = {1.0 * t, 1.0 * k, -1.0};
+    }
+  }
+  trees.back().clear();  // an empty last part too
+  SegmentList list;
+  for (const auto& tree : trees) list.append(std::span<const RootSegment>(tree));
+  std::vector<glm::dvec3> starts;
+  list.for_each([&](std::size_t, const glm::dvec3& start, const glm::dvec3&) { starts.push_back(start); });
+  ASSERT_EQ(starts.size(), list.size());
+  for (std::size_t i = list.size(); i-- > 0;) {  // from the last back, out of the visit's order
+    EXPECT_EQ(list[i].start, starts[i]) << "segment " << i;
+    EXPECT_EQ(list[i].end, starts[i] + glm::dvec3(0.0, 0.0, -1.0)) << "segment " << i;
+  }
+}
+
 // Passes everything to the reference solver and counts how the field is used.
 class CountingSolver final : public RootFieldSolver {
  public:
