@@ -120,6 +120,8 @@ YearCost year_cost(int year, const Stand& stand, const StageClock& before, const
   cost.trees_alive = living_tree_count(stand);
   for (const auto& [stage, total] : clock.stages())
     cost.stage_seconds.emplace_back(stage, total - before.seconds(stage));
+  for (const auto& [stage, total] : clock.cpu_stages())
+    cost.stage_cpu_seconds.emplace_back(stage, total - before.cpu_seconds(stage));
   cost.light_search_seconds = solve.search_seconds;
   cost.light_far_field_seconds = solve.far_field_seconds;
   cost.light_shading_seconds = solve.evaluate_seconds;
@@ -209,6 +211,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
   summary.light_far_field_cell_m_max = far_field_cells.coarsest();
   summary.stage_seconds = clock.stages();
+  summary.stage_cpu_seconds = clock.cpu_stages();
   summary.light_seconds = clock.seconds("light") + clock.seconds("light (open grown)");
   summary.wall_seconds = wall_seconds();
 

@@ -34,6 +34,7 @@ struct YearCost {
   int year = 0, stand_age = 0;
   long trees_alive = 0;                                        // at the end of the year
   std::vector<std::pair<std::string, double>> stage_seconds;  // this year's part of each stage of the run's clock
+  std::vector<std::pair<std::string, double>> stage_cpu_seconds;  // the process's CPU seconds in each of them
   // This year's stand solve: its parts (as SimulationSummary's sums) and the near-field candidates a ball scanned.
   double light_search_seconds = 0, light_far_field_seconds = 0, light_shading_seconds = 0;
   double light_tile_candidates_per_ball = 0;
@@ -45,6 +46,8 @@ struct SimulationSummary {
   double wall_seconds = 0, light_seconds = 0;
   std::string device;                                        // the light solver's name, as run.json
   std::vector<std::pair<std::string, double>> stage_seconds;  // as run.json
+  // The process's CPU seconds (every thread) in each stage: over stage_seconds, the cores it kept busy.
+  std::vector<std::pair<std::string, double>> stage_cpu_seconds;
   // The size of the run, for `heliostand bench stand`: tree-years = Σ over the simulated years of the trees that
   // grew in it; the rest counts what the living trees hold at the end.
   long tree_years = 0;

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -61,6 +62,7 @@ nlohmann::ordered_json by_year(const std::vector<YearCost>& years) {
                     {"stand_age", year.stand_age},
                     {"trees_alive", year.trees_alive},
                     {"stage_seconds", stage_object(year.stage_seconds)},
+                    {"stage_cpu_seconds", stage_object(year.stage_cpu_seconds)},
                     {"light_parts_seconds",
                      light_parts(year.light_search_seconds, year.light_far_field_seconds, year.light_shading_seconds)},
                     {"light_tile_candidates_per_ball", year.light_tile_candidates_per_ball}});
@@ -74,6 +76,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["benchmark"] = "stand";
   json["scenario"] = scenario.file.string();
   json["device"] = run.device;
+  json["hardware_threads"] = std::thread::hardware_concurrency();  // the cores stage_cpu_seconds can fill
   json["seed"] = scenario.run.seed;
   json["vtk_output"] = false;
   json["years"] = run.last_stand_age - run.first_stand_age;
@@ -85,6 +88,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["trees_dead"] = run.trees_dead;
   json["tree_years"] = run.tree_years;
   json["stage_seconds"] = stage_object(run.stage_seconds);
+  json["stage_cpu_seconds"] = stage_object(run.stage_cpu_seconds);
   json["total_seconds"] = run.wall_seconds;
   json["tree_years_per_second"] = run.wall_seconds > 0 ? run.tree_years / run.wall_seconds : 0.0;
   json["leaf_balls_at_end"] = run.leaf_balls;

@@ -1,6 +1,9 @@
 #pragma once
-// Wall time per stage of the simulated year, for run.json.
+// Wall time per stage of the simulated year, for run.json, and the process's CPU time in each stage, for `bench
+// stand`: CPU over wall is how many cores a stage kept busy, which tells a serial stage (a core idle on a 2-core
+// machine) from one that waits on nothing (docs/performance.md).
 #include <chrono>
+#include <ctime>
 #include <string>
 #include <utility>
 #include <vector>
@@ -9,38 +12,55 @@
 
 namespace heliostand {
 
+// CPU seconds the whole process (every thread: the worker threads and an OpenCL CPU device's) has used so far.
+inline double process_cpu_seconds() {
+  timespec now{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
 class StageClock {
  public:
+  using Seconds = std::vector<std::pair<std::string, double>>;
+
   template <typename Work>
   auto time(const std::string& stage, Work work) {
-    const auto start = std::chrono::steady_clock::now();
     struct Stop {
       StageClock& clock;
       const std::string& stage;
-      std::chrono::steady_clock::time_point start;
-      ~Stop() { clock.add(stage, std::chrono::steady_clock::now() - start); }
-    } stop{*this, stage, start};
+      std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+      double cpu_start = process_cpu_seconds();
+      ~Stop() {
+        add(clock.stages_, stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        add(clock.cpu_, stage, process_cpu_seconds() - cpu_start);
+      }
+    } stop{*this, stage};
     return work();
   }
-  double seconds(const std::string& stage) const {
-    for (const auto& [name, value] : stages_)
-      if (name == stage) return value;
-    return 0;
-  }
-  const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
+  double seconds(const std::string& stage) const { return find(stages_, stage); }
+  double cpu_seconds(const std::string& stage) const { return find(cpu_, stage); }
+  const Seconds& stages() const { return stages_; }
+  // The CPU seconds of each stage. Not kept in checkpoints: a resumed run's are those of its own session (`bench
+  // stand`, their reader, does not resume).
+  const Seconds& cpu_stages() const { return cpu_; }
 
  private:
   friend struct checkpoint::Access;
-  void add(const std::string& stage, std::chrono::steady_clock::duration elapsed) {
-    const double seconds = std::chrono::duration<double>(elapsed).count();
-    for (auto& [name, value] : stages_)
+  static double find(const Seconds& totals, const std::string& stage) {
+    for (const auto& [name, value] : totals)
+      if (name == stage) return value;
+    return 0;
+  }
+  static void add(Seconds& totals, const std::string& stage, double seconds) {
+    for (auto& [name, value] : totals)
       if (name == stage) {
         value += seconds;
         return;
       }
-    stages_.emplace_back(stage, seconds);
+    totals.emplace_back(stage, seconds);
   }
-  std::vector<std::pair<std::string, double>> stages_;
+  Seconds stages_;
+  Seconds cpu_;
 };
 
 }  // namespace heliostand

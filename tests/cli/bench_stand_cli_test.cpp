@@ -107,7 +107,9 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
   const nlohmann::json json = nlohmann::json::parse(read_text(file));
   const auto& years = json.at("by_year");
   ASSERT_EQ(years.size(), 3u) << "years 0 (the surveyed stand), 1 and 2";
-  std::map<std::string, double> stage_sum, part_sum;
+  std::map<std::string, double> stage_sum, part_sum, cpu_sum;
+  const double cores = json.at("hardware_threads").get<double>();
+  ASSERT_GE(cores, 1.0);
   for (std::size_t y = 0; y < years.size(); ++y) {
     EXPECT_EQ(years[y].at("year"), static_cast<int>(y));
     EXPECT_EQ(years[y].at("stand_age"), 20 + static_cast<int>(y));
@@ -119,6 +121,17 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
       part_sum[part] += seconds.get<double>(), parts += seconds.get<double>();
     }
     EXPECT_LE(parts, years[y].at("stage_seconds").at("light").get<double>()) << "year " << y;
+    // the CPU seconds of the same stages: at most every core busy for the stage's wall time (with 10 ms of the
+    // clocks' granularity), and the year's light took some
+    const auto& cpu = years[y].at("stage_cpu_seconds");
+    EXPECT_EQ(cpu.size(), years[y].at("stage_seconds").size()) << "year " << y;
+    for (const auto& [stage, seconds] : cpu.items()) {
+      EXPECT_GE(seconds.get<double>(), 0.0) << stage << " in year " << y;
+      EXPECT_LE(seconds.get<double>(), cores * years[y].at("stage_seconds").at(stage).get<double>() + 0.01)
+          << stage << " in year " << y;
+      cpu_sum[stage] += seconds.get<double>();
+    }
+    EXPECT_GT(cpu.at("light").get<double>(), 0.0) << "year " << y;
     for (const auto& [stage, seconds] : years[y].at("stage_seconds").items()) {
       EXPECT_GE(seconds.get<double>(), 0.0) << stage << " in year " << y;
       stage_sum[stage] += seconds.get<double>();
@@ -126,8 +139,12 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
   }
   EXPECT_GT(years[2].at("stage_seconds").at("growth").get<double>(), 0.0);
   const auto& total = json.at("stage_seconds");
-  for (const char* stage : {"light", "light (open grown)", "growth", "light response", "output"})
+  const auto& total_cpu = json.at("stage_cpu_seconds");
+  for (const char* stage : {"light", "light (open grown)", "growth", "light response", "output"}) {
     EXPECT_NEAR(stage_sum[stage], total.at(stage).get<double>(), 1e-9) << stage << ": every second of it is a year's";
+    EXPECT_NEAR(cpu_sum[stage], total_cpu.at(stage).get<double>(), 1e-9) << stage << ": the CPU's too";
+  }
+  EXPECT_GT(total_cpu.at("roots").get<double>() - cpu_sum["roots"], 0.0) << "the roots' spin-up used CPU";
   EXPECT_EQ(stage_sum["establishment"], 0.0) << "the survey's trees are established before the first year";
   EXPECT_GT(total.at("roots").get<double>() - stage_sum["roots"], 0.0) << "the roots' spin-up precedes the first year";
   for (const auto& [part, seconds] : json.at("light_parts_seconds").items())
