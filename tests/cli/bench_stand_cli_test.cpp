@@ -121,13 +121,13 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
       part_sum[part] += seconds.get<double>(), parts += seconds.get<double>();
     }
     EXPECT_LE(parts, years[y].at("stage_seconds").at("light").get<double>()) << "year " << y;
-    // the CPU seconds of the same stages: at most every core busy for the stage's wall time (with 10 ms of the
-    // clocks' granularity), and the year's light took some
+    // the CPU seconds of the same stages: at most every core busy for the stage's wall time (and 50 ms: the process's
+    // CPU clock may count a thread's time up to a scheduler tick late), and the year's light took some
     const auto& cpu = years[y].at("stage_cpu_seconds");
     EXPECT_EQ(cpu.size(), years[y].at("stage_seconds").size()) << "year " << y;
     for (const auto& [stage, seconds] : cpu.items()) {
       EXPECT_GE(seconds.get<double>(), 0.0) << stage << " in year " << y;
-      EXPECT_LE(seconds.get<double>(), cores * years[y].at("stage_seconds").at(stage).get<double>() + 0.01)
+      EXPECT_LE(seconds.get<double>(), cores * years[y].at("stage_seconds").at(stage).get<double>() + 0.05)
           << stage << " in year " << y;
       cpu_sum[stage] += seconds.get<double>();
     }
