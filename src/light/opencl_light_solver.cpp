@@ -79,7 +79,8 @@ const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, st
 // out by cell; it stays there for the culled kernel.
 cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
                            std::span<const SkyPatch> sky_patches, const cl::Buffer& patches, const cl_float4& cell,
-                           const cl_int4& dims, bool periodic, KeptBuffer& table_kept, std::size_t table_cap_bytes) {
+                           const cl_int4& dims, bool periodic, KeptBuffer& swept_kept, KeptBuffer& table_kept,
+                           std::size_t table_cap_bytes) {
   const auto& context = device.context;
   const std::size_t patch_count = sky_patches.size();
   const int margin = sweep_margin_cells(far, sky_patches);
@@ -87,7 +88,15 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   density.resize(density.size() + sweep_overread_floats, 0.0f);
   const cl::Buffer density_buffer = read_only(context, density);
   const std::size_t cells = far.grid().cell_count();
-  cl::Buffer depth(context, CL_MEM_READ_WRITE, (cells * patch_count + sweep_overread_floats) * sizeof(float));
+  // Both of the table's layouts are kept from one solve to the next, each replaced only when the table outgrows it:
+  // the sweep writes every entry of its own layout again and the layout by cell every entry of its own (below), and
+  // what a lookup reads past a row's end goes only into lanes left unused. On a CPU device a fresh buffer's pages
+  // are each touched for the first time by the kernel that writes them, which took about a third of the sweep at
+  // 10^5 balls (docs/performance.md "Both layouts of the far field kept"). An eighth to spare spares a growing
+  // canopy a new buffer every year, within the cap.
+  const std::size_t overread_bytes = sweep_overread_floats * sizeof(float);
+  const cl::Buffer& depth = kept_at_least(context, swept_kept, cells * patch_count * sizeof(float) + overread_bytes,
+                                          table_cap_bytes + overread_bytes);
   const std::size_t runs = (std::size_t(far.grid().dims.x) + 7) / 8;  // eight columns of a row a work item
   const std::size_t column_items = runs * far.grid().dims.y;
   int arg = 0;
@@ -108,17 +117,15 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
     compute::launch(device, k, column_items, patch_count);
   }
   const std::size_t row = far_row(patch_count);
-  // The table's buffer is kept for the next solve and replaced only when the table outgrows it (every entry is
-  // written again below). On a CPU device the layout into a fresh buffer took three to four times as long as into
-  // a used one: every page touched for the first time (docs/performance.md "The far-field table kept from one
-  // solve to the next"). An eighth to spare spares a growing canopy a new buffer every year, within the cap.
+  // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
+  // "The far-field table kept from one solve to the next").
   const cl::Buffer& table = kept_at_least(context, table_kept, cells * row * sizeof(float), table_cap_bytes);
   by_cell.setArg(0, depth);
   by_cell.setArg(1, table);
   by_cell.setArg(2, cl_int(cells));
   compute::launch(device, by_cell, (cells + 7) / 8, row / 8);
   device.queue.finish();
-  return table;  // the swept layout is released here: only one of the two stays on the device
+  return table;
 }
 
 // Float keeps ~7 digits: coordinates go to the device relative to the middle of their stand (or group), so
@@ -211,6 +218,7 @@ struct OpenCLLightSolver::Device {
   cl::Kernel each_alone;
   cl::Kernel culled_and_alone;
   cl::Kernel tile_entries;
+  KeptBuffer far_field_swept;  // sweep_far_field's own layout, [patch][cell]
   KeptBuffer far_field_table;  // sweep_far_field's, laid out by cell
   KeptBuffer tile_entries_by_axis, tile_entry_tags;  // the tile lists as the culled kernels scan them
 };
@@ -411,7 +419,8 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   const cl::Buffer depth_buffer =
       far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
                             sky.patches(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic,
-                            device_->far_field_table, far_table_cap_bytes(parameters_, sky.patches().size()))
+                            device_->far_field_swept, device_->far_field_table,
+                            far_table_cap_bytes(parameters_, sky.patches().size()))
           : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
   statistics_.far_field_seconds = seconds_since(part_start);
   statistics_.setup_seconds = seconds_since(setup_start);

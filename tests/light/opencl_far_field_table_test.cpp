@@ -1,6 +1,7 @@
-// The OpenCL solver keeps its far-field table's buffer on the device from one solve to the next (a run solves
-// every year; on a CPU device the layout into a fresh buffer took 3-4 times as long as into a used one): what it
-// lights must not depend on what it lit before.
+// The OpenCL solver keeps its far-field table's buffers on the device from one solve to the next, the sweep's layout
+// and the one by cell (a run solves every year; on a CPU device writing into a fresh buffer took 3-4 times as long as
+// into a used one): what it lights must not depend on what it lit before. A sweep that left one layer of a reused
+// buffer as the stand before had it fails here on every stand after the first.
 #include <gtest/gtest.h>
 
 #include <vector>
