@@ -91,8 +91,8 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // Both of the table's layouts are kept from one solve to the next, each replaced only when the table outgrows it:
   // the sweep writes every entry of its own layout again and the layout by cell every entry of its own (below), and
   // what a lookup reads past a row's end goes only into lanes left unused. On a CPU device a fresh buffer's pages
-  // are each touched for the first time by the kernel that writes them, which took about a third of the sweep at
-  // 10^5 balls (docs/performance.md "Both layouts of the far field kept"). An eighth to spare spares a growing
+  // are each touched for the first time by the kernel that writes them: a seventh of the far field's time at 10^5
+  // balls (docs/performance.md "Both layouts of the far field kept"). An eighth to spare spares a growing
   // canopy a new buffer every year, within the cap.
   const std::size_t overread_bytes = sweep_overread_floats * sizeof(float);
   const cl::Buffer& depth = kept_at_least(context, swept_kept, cells * patch_count * sizeof(float) + overread_bytes,

@@ -7,8 +7,10 @@
 // 1 GiB: what a run holds whatever its size (program and libraries, the OpenCL runtime, the light's far-field
 // table at its default 512 MB cap). 1.75 MiB per tree: the largest per-tree figure measured (docs/performance.md:
 // the hectare, 2 500 trees grown to age 80, peaked at 4.3 GB: (4.3 GB − 1 GiB) / 2 500 ≈ 1.3 MiB, rounded up by a
-// third for older and bigger trees). It is meant to catch a survey ten times too large, not to budget tightly: a run
-// is refused only when the estimate exceeds the memory it may use.
+// third for older and bigger trees). Since the OpenCL solver keeps the table's second layout too (2026-11-28), the
+// hectare peaks at 4.8 GB, (4.8 GB − 1 GiB) / 2 500 ≈ 1.5 MiB a tree: still within the formula. It is meant to catch
+// a survey ten times too large, not to budget tightly: a run is refused only when the estimate exceeds the memory it
+// may use.
 #include <cstdint>
 #include <optional>
 #include <string>
