@@ -342,200 +342,145 @@ std::optional<LightSolver::StandAndAlone> OpenCLLightSolver::solve_with_each_alo
   return both;
 }
 
+// One solve's stand on the device: the balls (and, culled on a periodic plot, their images within the cut-off of an
+// edge) relative to `origin`, and the sky, as every light kernel reads them.
+struct OpenCLLightSolver::DeviceStand {
+  std::chrono::steady_clock::time_point setup_start;
+  CelestialSphere sky;
+  PlotTorus torus;
+  OccluderSet set;
+  glm::dvec3 origin;
+  cl::Buffer balls, patches, axes, b0;
+  float log_t;
+};
+
+// One solve's far-field table on the device, laid out by cell, and where its grid lies relative to the stand's
+// origin. Without a far field: one cell of zeros and no attenuation.
+struct OpenCLLightSolver::FarFieldTable {
+  cl::Buffer table;
+  cl_float4 grid_origin, grid_cell;
+  cl_int4 grid_dims;
+  float attenuation;
+  double cell_m;  // LightSolveStatistics::far_field_cell_m
+};
+
+// What the fused pass (light_culled_and_alone) reads besides the stand: each group in its own frame, the group of
+// every occluder entry (an image's is its ball's), where each group starts, and the open-grown solver's B0.
+struct OpenCLLightSolver::FusedPass {
+  cl::Buffer group_balls, entry_group, group_start, alone_b0;
+};
+
+// The tile lists as the culled kernels scan them (cl/light.cl, tile_entries), and which part of which list each
+// receiver scans, in the tiles' order of receivers.
+struct OpenCLLightSolver::TileScan {
+  const cl::Buffer& entries;
+  const cl::Buffer& tags;
+  std::size_t entry_stride;
+  std::vector<cl_int> receiver_balls;
+  std::vector<cl_int2> receiver_scan;  // first and end of the part of its tile's list each receiver scans
+};
+
+// The culled kernel's results, in the tiles' order of receivers: the stand's light and, in the fused pass, each
+// receiver's group alone.
+struct OpenCLLightSolver::CulledLight {
+  std::vector<cl_float4> stand, alone;
+};
+
 std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const LeafBall> balls,
                                                             std::span<const std::uint32_t> receivers,
                                                             AloneLight* alone) {
   check_receivers(balls, receivers);
   statistics_ = {};
-  std::vector<LightSample> samples(receivers.size());
-  if (receivers.empty()) return samples;
+  if (receivers.empty()) return {};
+  const DeviceStand stand = stand_on_device(balls);
+  return parameters_.exact ? solve_exact(stand, receivers) : solve_culled(stand, balls, receivers, alone);
+}
+
+OpenCLLightSolver::DeviceStand OpenCLLightSolver::stand_on_device(std::span<const LeafBall> balls) const {
   const auto setup_start = Clock::now();
   const CelestialSphere sky(parameters_);
   const PlotTorus torus = PlotTorus::from(parameters_);
-  const OccluderSet set = make_occluder_set(balls, torus, parameters_.exact ? 0.0 : parameters_.cutoff_m);
-
+  OccluderSet set = make_occluder_set(balls, torus, parameters_.exact ? 0.0 : parameters_.cutoff_m);
   const glm::dvec3 origin = float_origin(set.centres);
   std::vector<cl_float4> ball_data(set.centres.size());
   for (std::size_t k = 0; k < set.centres.size(); ++k) ball_data[k] = relative_ball(set.centres[k], set.radii[k], origin);
   const SkyData sky_data = sky_data_of(sky);
-  const auto& patch_data = sky_data.patches;
-  const auto& b0 = sky_data.b0;
   const auto& context = device_->cl.context;
-  auto& queue = device_->cl.queue;
-  const cl::Buffer balls_buffer = read_only(context, ball_data);
-  const cl::Buffer patches_buffer = read_only(context, patch_data);
-  const cl::Buffer axes_buffer = read_only(context, sky_data.axes);
-  const cl::Buffer b0_buffer = read_only(context, b0);
-  const float log_t = float(std::log(parameters_.transmittance));
+  return DeviceStand{setup_start,
+                     sky,
+                     torus,
+                     std::move(set),
+                     origin,
+                     read_only(context, ball_data),
+                     read_only(context, sky_data.patches),
+                     read_only(context, sky_data.axes),
+                     read_only(context, sky_data.b0),
+                     float(std::log(parameters_.transmittance))};
+}
 
-  auto collect = [&](const cl::Buffer& out, std::size_t first_slot, std::size_t count) {
-    std::vector<cl_float4> result(count);
-    queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data());
-    for (std::size_t k = 0; k < count; ++k) samples[first_slot + k] = sample_of(result[k]);
-  };
+std::vector<LightSample> OpenCLLightSolver::solve_exact(const DeviceStand& stand,
+                                                        std::span<const std::uint32_t> receivers) {
+  statistics_.setup_seconds = 0;
+  const double ball_count = double(stand.set.ball_count);
+  statistics_.mean_candidates = stand.torus.periodic ? 9.0 * ball_count - 1 : ball_count - 1;
+  const auto start = Clock::now();
+  const auto& context = device_->cl.context;
+  std::vector<cl_int> receiver_data(receivers.begin(), receivers.end());
+  const cl::Buffer receivers_buffer = read_only(context, receiver_data);
+  cl::Buffer out(context, CL_MEM_WRITE_ONLY, receivers.size() * sizeof(cl_float4));
+  auto& k = device_->exact;
+  int arg = 0;
+  k.setArg(arg++, stand.balls);
+  k.setArg(arg++, cl_int(stand.set.ball_count));
+  k.setArg(arg++, receivers_buffer);
+  k.setArg(arg++, cl_int(receivers.size()));
+  k.setArg(arg++, stand.patches);
+  k.setArg(arg++, stand.axes);
+  k.setArg(arg++, stand.b0);
+  k.setArg(arg++, stand.log_t);
+  k.setArg(arg++, cl_int(stand.torus.periodic ? 1 : 0));
+  k.setArg(arg++, float(stand.torus.size.x));
+  k.setArg(arg++, float(stand.torus.size.y));
+  k.setArg(arg++, out);
+  compute::launch(device_->cl, k, receivers.size());
+  std::vector<cl_float4> result(receivers.size());
+  device_->cl.queue.enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
+  std::vector<LightSample> samples(receivers.size());
+  for (std::size_t k = 0; k < receivers.size(); ++k) samples[k] = sample_of(result[k]);
+  statistics_.evaluate_seconds = seconds_since(start);
+  return samples;
+}
 
-  if (parameters_.exact) {
-    statistics_.setup_seconds = 0;
-    statistics_.mean_candidates = torus.periodic ? 9.0 * balls.size() - 1 : double(balls.size()) - 1;
-    const auto start = Clock::now();
-    std::vector<cl_int> receiver_data(receivers.begin(), receivers.end());
-    const cl::Buffer receivers_buffer = read_only(context, receiver_data);
-    cl::Buffer out(context, CL_MEM_WRITE_ONLY, receivers.size() * sizeof(cl_float4));
-    auto& k = device_->exact;
-    int arg = 0;
-    k.setArg(arg++, balls_buffer);
-    k.setArg(arg++, cl_int(set.ball_count));
-    k.setArg(arg++, receivers_buffer);
-    k.setArg(arg++, cl_int(receivers.size()));
-    k.setArg(arg++, patches_buffer);
-    k.setArg(arg++, axes_buffer);
-    k.setArg(arg++, b0_buffer);
-    k.setArg(arg++, log_t);
-    k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
-    k.setArg(arg++, float(torus.size.x));
-    k.setArg(arg++, float(torus.size.y));
-    k.setArg(arg++, out);
-    compute::launch(device_->cl, k, receivers.size());
-    collect(out, 0, receivers.size());
-    statistics_.evaluate_seconds = seconds_since(start);
-    return samples;
-  }
-
+std::vector<LightSample> OpenCLLightSolver::solve_culled(const DeviceStand& stand, std::span<const LeafBall> balls,
+                                                         std::span<const std::uint32_t> receivers,
+                                                         AloneLight* alone) {
   auto part_start = Clock::now();
-  const NearFieldSearch search(set, parameters_.cutoff_m);
+  const NearFieldSearch search(stand.set, parameters_.cutoff_m);
   statistics_.search_seconds = seconds_since(part_start);
   part_start = Clock::now();
-  // The far field: density on the host (O(balls)), optical-depth table swept on the device, where it stays.
-  // Without a far field the kernel gets a one-cell table of zeros and a zero attenuation factor.
-  const std::optional<FarField> far =
-      parameters_.far_field ? std::optional<FarField>(std::in_place, set, parameters_, sky, false) : std::nullopt;
-  const VoxelGrid grid = far ? far->grid() : VoxelGrid{};
-  statistics_.far_field_cell_m = far ? grid.cell.z : 0.0;  // z is never stretched to fit a periodic plot
-  const glm::dvec3 grid_origin = grid.origin - origin;
-  const cl_float4 grid_origin_arg = {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}};
-  const cl_float4 grid_cell_arg = {{float(grid.cell.x), float(grid.cell.y), float(grid.cell.z), 0.0f}};
-  const cl_int4 grid_dims_arg = {{grid.dims.x, grid.dims.y, grid.dims.z, 0}};
-  const float far_attenuation = far ? float(1.0 - parameters_.transmittance) : 0.0f;
-  const cl::Buffer depth_buffer =
-      far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
-                            sky.patches(), patches_buffer, grid_cell_arg, grid_dims_arg, torus.periodic,
-                            device_->far_field_swept, device_->far_field_table,
-                            far_table_cap_bytes(parameters_, sky.patches().size()))
-          : read_only(context, std::vector<float>(far_row(sky.patches().size()), 0.0f));  // one empty cell
+  const FarFieldTable far = far_field_on_device(stand);
+  statistics_.far_field_cell_m = far.cell_m;
   statistics_.far_field_seconds = seconds_since(part_start);
-  statistics_.setup_seconds = seconds_since(setup_start);
+  statistics_.setup_seconds = seconds_since(stand.setup_start);
 
-  // Near-field candidates, one list per tile of receivers (light/near_field.hpp).
+  // Near-field candidates, one list per tile of receivers (light/near_field.hpp), laid out for the scan.
   part_start = Clock::now();
   const TileCandidates near = search.tile_candidates(receivers, tile_edge_for(parameters_.cutoff_m));
-  std::vector<cl_int> receiver_balls(receivers.size());
-  std::vector<cl_int2> receiver_scan(receivers.size());  // the part of its tile's list each receiver scans
-  for (std::size_t tile = 0; tile < near.tile_count(); ++tile)
-    for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
-      receiver_balls[k] = cl_int(receivers[near.slots[k]]);
-      receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
-    }
   double search_seconds = seconds_since(part_start);
-  // The fused pass: each group in its own frame, the group of every occluder entry (an image's is its ball's),
-  // and the open-grown solver's B0 (a different sky_scale rounds differently; the patches are the stand's, since
-  // solve_with_each_alone fuses only with the same bands and sectors).
-  std::optional<cl::Buffer> group_balls_buffer, entry_group_buffer, group_start_buffer, alone_b0_buffer;
-  if (alone != nullptr) {
-    const GroupFrames frames = group_frames(balls, alone->group_start);
-    std::vector<cl_int> entry_group(set.centres.size());
-    for (std::size_t k = 0; k < entry_group.size(); ++k) entry_group[k] = frames.group[set.source[k]];
-    group_balls_buffer = read_only(context, frames.balls);
-    entry_group_buffer = read_only(context, entry_group);
-    group_start_buffer = read_only(context, frames.group_start);
-    alone_b0_buffer = read_only(context, sky_data_of(CelestialSphere(alone->solver.parameters_)).b0);
-  }
-  // The tile lists laid out on the device for the scan (cl/light.cl, tile_entries): each entry's ball copied in, by
-  // axis, and its tag, read in order eight at a time by the culled kernels. That scan costs less than reading the
-  // balls through the lists' indices did (docs/performance.md "Narrow windows in one run a band, and the tile lists
-  // read in order"), for 20 bytes an entry on the device where the index took 4; the buffers are kept from one
-  // solve to the next, as the far field's table is.
+  const std::optional<FusedPass> fused =
+      alone != nullptr ? std::optional<FusedPass>(fused_pass_on_device(stand, balls, *alone)) : std::nullopt;
   part_start = Clock::now();
-  const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
-  if (set.centres.size() > std::size_t(std::numeric_limits<cl_int>::max()))
-    throw std::runtime_error("the light's stand holds " + std::to_string(set.centres.size()) +
-                             " leaf balls with their periodic images, more than the OpenCL kernels can index");
-  if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
-    throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
-                             " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
-  const cl::Buffer& entries_buffer =
-      kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
-  const cl::Buffer& entry_tag_buffer =
-      kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
-  {
-    // The indices go as they are (unsigned, read as int by the kernel: the occluders are fewer than 2^31, checked
-    // above), not through an int copy of the whole list (144 MB at 10^6 balls).
-    const cl::Buffer occluders_buffer = read_only(context, near.occluders);
-    auto& k = device_->tile_entries;
-    int arg = 0;
-    k.setArg(arg++, balls_buffer);
-    k.setArg(arg++, occluders_buffer);
-    k.setArg(arg++, cl_int(near.occluders.size()));
-    k.setArg(arg++, alone != nullptr ? *entry_group_buffer : occluders_buffer);  // read only when tagged by group
-    k.setArg(arg++, cl_int(alone != nullptr ? 1 : 0));
-    k.setArg(arg++, cl_int(entry_stride));
-    k.setArg(arg++, entries_buffer);
-    k.setArg(arg++, entry_tag_buffer);
-    compute::launch(device_->cl, k, entry_stride);
-    queue.finish();  // the index list goes here; the layout's time is the search's
-  }
+  const TileScan scan = tile_scan_on_device(stand, near, receivers, fused ? &*fused : nullptr);
   search_seconds += seconds_since(part_start);
 
   const auto start = Clock::now();
-  std::vector<cl_float4> result(receivers.size()), alone_result(alone != nullptr ? receivers.size() : 0);
-  // Launches of at most `culled_chunk` receivers keep one launch's run time and output buffer bounded.
-  for (std::size_t first = 0; first < receivers.size(); first += culled_chunk) {
-    const std::size_t count = std::min(culled_chunk, receivers.size() - first);
-    const cl::Buffer receivers_buffer = read_only(context, std::vector<cl_int>(receiver_balls.begin() + first,
-                                                                                receiver_balls.begin() + first + count));
-    const cl::Buffer scan_buffer = read_only(context, std::vector<cl_int2>(receiver_scan.begin() + first,
-                                                                           receiver_scan.begin() + first + count));
-    cl::Buffer out(context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
-    const std::optional<cl::Buffer> alone_out =
-        alone != nullptr ? std::optional<cl::Buffer>(std::in_place, context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4))
-                         : std::nullopt;
-    auto& k = alone != nullptr ? device_->culled_and_alone : device_->culled;
-    int arg = 0;
-    k.setArg(arg++, balls_buffer);
-    k.setArg(arg++, receivers_buffer);
-    k.setArg(arg++, scan_buffer);
-    k.setArg(arg++, cl_int(count));
-    k.setArg(arg++, entries_buffer);
-    k.setArg(arg++, cl_int(entry_stride));
-    k.setArg(arg++, entry_tag_buffer);
-    if (alone != nullptr) {
-      k.setArg(arg++, *entry_group_buffer);
-      k.setArg(arg++, *group_balls_buffer);
-      k.setArg(arg++, *group_start_buffer);
-    }
-    k.setArg(arg++, patches_buffer);
-    k.setArg(arg++, axes_buffer);
-    k.setArg(arg++, b0_buffer);
-    if (alone != nullptr) k.setArg(arg++, *alone_b0_buffer);
-    k.setArg(arg++, log_t);
-    k.setArg(arg++, depth_buffer);
-    k.setArg(arg++, grid_origin_arg);
-    k.setArg(arg++, grid_cell_arg);
-    k.setArg(arg++, grid_dims_arg);
-    k.setArg(arg++, cl_int(torus.periodic ? 1 : 0));
-    k.setArg(arg++, float(parameters_.cutoff_m));
-    k.setArg(arg++, far_attenuation);
-    k.setArg(arg++, out);
-    if (alone != nullptr) k.setArg(arg++, *alone_out);
-    compute::launch(device_->cl, k, count);
-    queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data() + first);
-    if (alone != nullptr)
-      queue.enqueueReadBuffer(*alone_out, CL_TRUE, 0, count * sizeof(cl_float4), alone_result.data() + first);
-  }
+  const CulledLight light = shade_culled(stand, far, scan, fused ? &*fused : nullptr);
+  std::vector<LightSample> samples(receivers.size());
   std::size_t candidate_total = 0;
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    samples[near.slots[k]] = sample_of(result[k]);
-    if (alone != nullptr) alone->samples[receivers[near.slots[k]]] = sample_of(alone_result[k]);
-    candidate_total += std::size_t(receiver_scan[k].s[1] - receiver_scan[k].s[0]);
+    samples[near.slots[k]] = sample_of(light.stand[k]);
+    if (alone != nullptr) alone->samples[receivers[near.slots[k]]] = sample_of(light.alone[k]);
+    candidate_total += std::size_t(scan.receiver_scan[k].s[1] - scan.receiver_scan[k].s[0]);
   }
   statistics_.evaluate_seconds = seconds_since(start);
   statistics_.setup_seconds += search_seconds;
@@ -544,6 +489,143 @@ std::vector<LightSample> OpenCLLightSolver::solve_receivers(std::span<const Leaf
   // scanned length is known here (the reference solver reports both).
   statistics_.mean_tile_candidates = double(candidate_total) / receivers.size();
   return samples;
+}
+
+// The far field: density on the host (O(balls)), optical-depth table swept on the device, where it stays.
+// Without a far field the kernel gets a one-cell table of zeros and a zero attenuation factor.
+OpenCLLightSolver::FarFieldTable OpenCLLightSolver::far_field_on_device(const DeviceStand& stand) {
+  const std::size_t patch_count = stand.sky.patches().size();
+  const std::optional<FarField> far =
+      parameters_.far_field ? std::optional<FarField>(std::in_place, stand.set, parameters_, stand.sky, false)
+                            : std::nullopt;
+  const VoxelGrid grid = far ? far->grid() : VoxelGrid{};
+  const glm::dvec3 grid_origin = grid.origin - stand.origin;
+  FarFieldTable on_device{cl::Buffer(),
+                          {{float(grid_origin.x), float(grid_origin.y), float(grid_origin.z), 0.0f}},
+                          {{float(grid.cell.x), float(grid.cell.y), float(grid.cell.z), 0.0f}},
+                          {{grid.dims.x, grid.dims.y, grid.dims.z, 0}},
+                          far ? float(1.0 - parameters_.transmittance) : 0.0f,
+                          far ? grid.cell.z : 0.0};  // z is never stretched to fit a periodic plot
+  on_device.table =
+      far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
+                            stand.sky.patches(), stand.patches, on_device.grid_cell, on_device.grid_dims,
+                            stand.torus.periodic, device_->far_field_swept, device_->far_field_table,
+                            far_table_cap_bytes(parameters_, patch_count))
+          : read_only(device_->cl.context, std::vector<float>(far_row(patch_count), 0.0f));  // one empty cell
+  return on_device;
+}
+
+// The fused pass's inputs. B0 is the open-grown solver's (a different sky_scale rounds differently); the patches are
+// the stand's, since solve_with_each_alone fuses only with the same bands and sectors.
+OpenCLLightSolver::FusedPass OpenCLLightSolver::fused_pass_on_device(const DeviceStand& stand,
+                                                                     std::span<const LeafBall> balls,
+                                                                     const AloneLight& alone) const {
+  const GroupFrames frames = group_frames(balls, alone.group_start);
+  std::vector<cl_int> entry_group(stand.set.centres.size());
+  for (std::size_t k = 0; k < entry_group.size(); ++k) entry_group[k] = frames.group[stand.set.source[k]];
+  const auto& context = device_->cl.context;
+  return FusedPass{read_only(context, frames.balls), read_only(context, entry_group),
+                   read_only(context, frames.group_start),
+                   read_only(context, sky_data_of(CelestialSphere(alone.solver.parameters_)).b0)};
+}
+
+// The tile lists laid out on the device for the scan (cl/light.cl, tile_entries): each entry's ball copied in, by
+// axis, and its tag (its group, given the `fused` pass), read in order eight at a time by the culled
+// kernels. That scan costs less than reading the balls through the lists' indices did (docs/performance.md "Narrow
+// windows in one run a band, and the tile lists read in order"), for 20 bytes an entry on the device where the index
+// took 4; the buffers are kept from one solve to the next, as the far field's table is.
+OpenCLLightSolver::TileScan OpenCLLightSolver::tile_scan_on_device(const DeviceStand& stand,
+                                                                   const TileCandidates& near,
+                                                                   std::span<const std::uint32_t> receivers,
+                                                                   const FusedPass* fused) {
+  std::vector<cl_int> receiver_balls(receivers.size());
+  std::vector<cl_int2> receiver_scan(receivers.size());
+  for (std::size_t tile = 0; tile < near.tile_count(); ++tile)
+    for (auto k = near.slot_start[tile]; k < near.slot_start[tile + 1]; ++k) {
+      receiver_balls[k] = cl_int(receivers[near.slots[k]]);
+      receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
+    }
+  const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
+  if (stand.set.centres.size() > std::size_t(std::numeric_limits<cl_int>::max()))
+    throw std::runtime_error("the light's stand holds " + std::to_string(stand.set.centres.size()) +
+                             " leaf balls with their periodic images, more than the OpenCL kernels can index");
+  if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
+    throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
+                             " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
+  const auto& context = device_->cl.context;
+  const cl::Buffer& entries = kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
+  const cl::Buffer& tags = kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
+  // The indices go as they are (unsigned, read as int by the kernel: the occluders are fewer than 2^31, checked
+  // above), not through an int copy of the whole list (144 MB at 10^6 balls).
+  const cl::Buffer occluders = read_only(context, near.occluders);
+  auto& k = device_->tile_entries;
+  int arg = 0;
+  k.setArg(arg++, stand.balls);
+  k.setArg(arg++, occluders);
+  k.setArg(arg++, cl_int(near.occluders.size()));
+  k.setArg(arg++, fused != nullptr ? fused->entry_group : occluders);  // read only when tagged by group
+  k.setArg(arg++, cl_int(fused != nullptr ? 1 : 0));
+  k.setArg(arg++, cl_int(entry_stride));
+  k.setArg(arg++, entries);
+  k.setArg(arg++, tags);
+  compute::launch(device_->cl, k, entry_stride);
+  device_->cl.queue.finish();  // the index list goes here; the layout's time is the search's
+  return TileScan{entries, tags, entry_stride, std::move(receiver_balls), std::move(receiver_scan)};
+}
+
+// The culled kernel (light_culled, or light_culled_and_alone given `fused`) over every receiver of `scan`, in
+// launches of at most `culled_chunk` receivers, which keep one launch's run time and output buffer bounded.
+OpenCLLightSolver::CulledLight OpenCLLightSolver::shade_culled(const DeviceStand& stand, const FarFieldTable& far,
+                                                               const TileScan& scan, const FusedPass* fused) {
+  const auto& context = device_->cl.context;
+  auto& queue = device_->cl.queue;
+  const std::size_t receiver_count = scan.receiver_balls.size();
+  CulledLight light{std::vector<cl_float4>(receiver_count),
+                    std::vector<cl_float4>(fused != nullptr ? receiver_count : 0)};
+  for (std::size_t first = 0; first < receiver_count; first += culled_chunk) {
+    const std::size_t count = std::min(culled_chunk, receiver_count - first);
+    const cl::Buffer receivers_buffer = read_only(
+        context, std::vector<cl_int>(scan.receiver_balls.begin() + first, scan.receiver_balls.begin() + first + count));
+    const cl::Buffer scan_buffer = read_only(
+        context, std::vector<cl_int2>(scan.receiver_scan.begin() + first, scan.receiver_scan.begin() + first + count));
+    cl::Buffer out(context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
+    const std::optional<cl::Buffer> alone_out =
+        fused != nullptr ? std::optional<cl::Buffer>(std::in_place, context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4))
+                         : std::nullopt;
+    auto& k = fused != nullptr ? device_->culled_and_alone : device_->culled;
+    int arg = 0;
+    k.setArg(arg++, stand.balls);
+    k.setArg(arg++, receivers_buffer);
+    k.setArg(arg++, scan_buffer);
+    k.setArg(arg++, cl_int(count));
+    k.setArg(arg++, scan.entries);
+    k.setArg(arg++, cl_int(scan.entry_stride));
+    k.setArg(arg++, scan.tags);
+    if (fused != nullptr) {
+      k.setArg(arg++, fused->entry_group);
+      k.setArg(arg++, fused->group_balls);
+      k.setArg(arg++, fused->group_start);
+    }
+    k.setArg(arg++, stand.patches);
+    k.setArg(arg++, stand.axes);
+    k.setArg(arg++, stand.b0);
+    if (fused != nullptr) k.setArg(arg++, fused->alone_b0);
+    k.setArg(arg++, stand.log_t);
+    k.setArg(arg++, far.table);
+    k.setArg(arg++, far.grid_origin);
+    k.setArg(arg++, far.grid_cell);
+    k.setArg(arg++, far.grid_dims);
+    k.setArg(arg++, cl_int(stand.torus.periodic ? 1 : 0));
+    k.setArg(arg++, float(parameters_.cutoff_m));
+    k.setArg(arg++, far.attenuation);
+    k.setArg(arg++, out);
+    if (fused != nullptr) k.setArg(arg++, *alone_out);
+    compute::launch(device_->cl, k, count);
+    queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), light.stand.data() + first);
+    if (fused != nullptr)
+      queue.enqueueReadBuffer(*alone_out, CL_TRUE, 0, count * sizeof(cl_float4), light.alone.data() + first);
+  }
+  return light;
 }
 
 }  // namespace heliostand

@@ -12,6 +12,8 @@ struct OpenCLContext;
 
 namespace heliostand {
 
+struct TileCandidates;
+
 class OpenCLLightSolver final : public LightSolver {
  public:
   // Runs on `device` (the run's compute backend, shared with the other solvers); builds cl/light.cl for it.
@@ -36,9 +38,26 @@ class OpenCLLightSolver final : public LightSolver {
  private:
   struct Device;
   struct AloneLight;
+  // One solve's parts on the device, in the order the solve makes them (opencl_light_solver.cpp).
+  struct DeviceStand;
+  struct FarFieldTable;
+  struct FusedPass;
+  struct TileScan;
+  struct CulledLight;
   // solve_for; with `alone` (a culled solver only), also each receiver's group alone, into alone->samples.
   std::vector<LightSample> solve_receivers(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers,
                                            AloneLight* alone);
+  DeviceStand stand_on_device(std::span<const LeafBall> balls) const;
+  std::vector<LightSample> solve_exact(const DeviceStand& stand, std::span<const std::uint32_t> receivers);
+  std::vector<LightSample> solve_culled(const DeviceStand& stand, std::span<const LeafBall> balls,
+                                        std::span<const std::uint32_t> receivers, AloneLight* alone);
+  FarFieldTable far_field_on_device(const DeviceStand& stand);
+  FusedPass fused_pass_on_device(const DeviceStand& stand, std::span<const LeafBall> balls,
+                                 const AloneLight& alone) const;
+  TileScan tile_scan_on_device(const DeviceStand& stand, const TileCandidates& near,
+                               std::span<const std::uint32_t> receivers, const FusedPass* fused);
+  CulledLight shade_culled(const DeviceStand& stand, const FarFieldTable& far, const TileScan& scan,
+                           const FusedPass* fused);
   bool groups_clear_of_own_images(std::span<const LeafBall> balls, std::span<const std::size_t> group_start) const;
   LightParameters parameters_;
   std::unique_ptr<Device> device_;
