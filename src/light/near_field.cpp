@@ -101,25 +101,59 @@ bool NearFieldSearch::within_cutoff(std::uint32_t i, std::uint32_t j) const {
   return glm::dot(d, d) <= cutoff_m_ * cutoff_m_;
 }
 
-TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> receivers, double tile_m) const {
-  // Group the receiver slots by tile: sorted by (tile, slot), so the order is reproducible.
+namespace {
+
+// Groups the receiver slots by tile into `lists` (slots, slot_start), sorted by (tile, slot) so that the order is
+// reproducible, and returns each tile's centre, x y z one tile after another.
+std::vector<double> group_by_tile(std::span<const std::uint32_t> receivers, const OccluderSet& occluders, double tile_m,
+                                  TileCandidates& lists) {
   std::vector<std::pair<TileKey, std::uint32_t>> keyed(receivers.size());
   for (std::uint32_t slot = 0; slot < receivers.size(); ++slot)
-    keyed[slot] = {tile_of(occluders_.centres[receivers[slot]], tile_m), slot};
+    keyed[slot] = {tile_of(occluders.centres[receivers[slot]], tile_m), slot};
   std::sort(keyed.begin(), keyed.end());
-
-  TileCandidates lists;
   lists.slots.reserve(receivers.size());
   lists.slot_start.push_back(0);
-  lists.start.push_back(0);
-  std::vector<double> queries;
+  std::vector<double> centres;
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     lists.slots.push_back(keyed[k].second);
     if (k + 1 < keyed.size() && keyed[k + 1].first == keyed[k].first) continue;
     lists.slot_start.push_back(static_cast<std::uint32_t>(lists.slots.size()));
     const glm::dvec3 centre = tile_centre(keyed[k].first, tile_m);
-    queries.insert(queries.end(), {centre.x, centre.y, centre.z});
+    centres.insert(centres.end(), {centre.x, centre.y, centre.z});
   }
+  return centres;
+}
+
+// Each tile's list where the block of tiles that found it left it (`block_lists`, `tile_size` entries a tile) put
+// in its place in `lists.occluders`, and each receiver's scan end made absolute. The lists are indexed with 32 bits.
+void place_tile_lists(std::vector<std::vector<std::uint32_t>>& block_lists, std::span<const std::uint32_t> tile_size,
+                      TileCandidates& lists) {
+  const std::size_t tile_count = tile_size.size();
+  lists.start.resize(tile_count + 1);
+  std::uint64_t total = 0;
+  for (std::size_t t = 0; t < tile_count; ++t) {
+    total += tile_size[t];
+    if (total > std::numeric_limits<std::uint32_t>::max())
+      throw std::runtime_error("the light's near-field tile lists hold more than 2^32 entries; use a shorter [light] "
+                               "cutoff_m or a smaller stand");
+    lists.start[t + 1] = std::uint32_t(total);
+  }
+  lists.occluders.resize(total);
+  parallel_for_blocks(tile_count, tiles_per_block, [&](std::size_t first_tile, std::size_t last_tile) {
+    std::vector<std::uint32_t>& out = block_lists[first_tile / tiles_per_block];
+    std::copy(out.begin(), out.end(), lists.occluders.begin() + lists.start[first_tile]);
+    std::vector<std::uint32_t>().swap(out);
+    for (std::size_t t = first_tile; t < last_tile; ++t)
+      for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) lists.scan_end[k] += lists.start[t];
+  });
+}
+
+}  // namespace
+
+TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> receivers, double tile_m) const {
+  TileCandidates lists;
+  lists.start.push_back(0);
+  const std::vector<double> queries = group_by_tile(receivers, occluders_, tile_m, lists);
   const std::size_t tile_count = lists.tile_count();
   if (!index_ || tile_count == 0) {
     lists.start.resize(tile_count + 1, 0);
@@ -164,23 +198,7 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
       }
     }
   });
-  lists.start.resize(tile_count + 1);
-  std::uint64_t total = 0;
-  for (std::size_t t = 0; t < tile_count; ++t) {
-    total += tile_size[t];
-    if (total > std::numeric_limits<std::uint32_t>::max())
-      throw std::runtime_error("the light's near-field tile lists hold more than 2^32 entries; use a shorter [light] "
-                               "cutoff_m or a smaller stand");
-    lists.start[t + 1] = std::uint32_t(total);
-  }
-  lists.occluders.resize(total);
-  parallel_for_blocks(tile_count, tiles_per_block, [&](std::size_t first_tile, std::size_t last_tile) {
-    std::vector<std::uint32_t>& out = block_lists[first_tile / tiles_per_block];
-    std::copy(out.begin(), out.end(), lists.occluders.begin() + lists.start[first_tile]);
-    std::vector<std::uint32_t>().swap(out);
-    for (std::size_t t = first_tile; t < last_tile; ++t)
-      for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) lists.scan_end[k] += lists.start[t];
-  });
+  place_tile_lists(block_lists, tile_size, lists);
   return lists;
 }
 
