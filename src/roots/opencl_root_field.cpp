@@ -67,6 +67,65 @@ constexpr std::size_t segments_per_upload = std::size_t{1} << 16;
 // A worker thread's share of the host's conversions (segments of an upload, apices of a query).
 constexpr std::size_t items_per_block = std::size_t{1} << 12;
 
+// The year's segments in the grid's cell order (the kernel walks a cell's segments contiguously), each with its
+// midpoint and half length for a cheap first test, relative to `frame`.
+struct SegmentsOnDevice {
+  cl::Buffer middle, start, end;
+};
+
+SegmentsOnDevice segments_on_device(compute::OpenCLContext& cl, const SegmentList& segments, const SegmentGrid& grid,
+                                    const glm::dvec3& frame) {
+  const std::size_t count = std::max<std::size_t>(segments.size(), 1);
+  SegmentsOnDevice on_device{cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count),
+                             cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count),
+                             cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count)};
+  std::vector<cl_float4> middles, starts, ends;
+  for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
+    const std::size_t count_here = std::min(segments.size() - first, segments_per_upload);
+    middles.resize(count_here);
+    starts.resize(count_here);
+    ends.resize(count_here);
+    // Entries convert independently (a gather from the trees' lists in cell order): blocks of them go to the worker
+    // threads, since this host work is not shortened by a faster device.
+    parallel_for_blocks(count_here, items_per_block, [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = from; k < to; ++k) {
+        const RootSegmentLine segment = segments[static_cast<std::size_t>(grid.cell_segments[first + k])];
+        middles[k] = to_float4(0.5 * (segment.start + segment.end) - frame, 0.5 * glm::length(segment.end - segment.start));
+        starts[k] = to_float4(segment.start - frame);
+        ends[k] = to_float4(segment.end - frame);
+      }
+    });
+    write(cl.queue, on_device.middle, middles, first);
+    write(cl.queue, on_device.start, starts, first);
+    write(cl.queue, on_device.end, ends, first);
+  }
+  return on_device;
+}
+
+// The soil's moisture at its vertices and where they lie relative to `frame`; without soil, one unused value (the
+// kernel is told there is none).
+struct SoilOnDevice {
+  cl::Buffer moisture;
+  cl_int4 vertices{{2, 2, 2, 0}};
+  cl_float4 origin{{0, 0, 0, 0}};
+  float spacing = 1.0f;
+};
+
+SoilOnDevice soil_on_device(const cl::Context& context, const SoilGrid* soil, const glm::dvec3& frame) {
+  SoilOnDevice on_device;
+  std::vector<float> moisture;
+  if (soil != nullptr) {
+    const std::vector<double>& values = soil->values(SoilField::moisture);
+    moisture.assign(values.begin(), values.end());
+    const glm::ivec3 n = soil->vertex_counts();
+    on_device.vertices = {{n.x, n.y, n.z, 0}};
+    on_device.origin = to_float4(soil->min_corner() - frame);
+    on_device.spacing = static_cast<float>(soil->geometry().spacing_m);
+  }
+  on_device.moisture = read_only_buffer(context, moisture);
+  return on_device;
+}
+
 }  // namespace
 
 OpenCLRootFieldSolver::OpenCLRootFieldSolver(const compute::OpenCLContext& device) : state_(std::make_unique<State>()) {
@@ -83,57 +142,19 @@ std::string OpenCLRootFieldSolver::name() const { return "opencl:" + state_->cl.
 
 void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   State& s = *state_;
-  const SegmentList& segments = year.segments;
-  s.grid = SegmentGrid::build(segments, year.widest_perception_radius_m);
+  s.grid = SegmentGrid::build(year.segments, year.widest_perception_radius_m);
   // One frame origin for everything on the device keeps float positions small (sub-micrometre over 100 m).
   s.frame = year.soil != nullptr ? year.soil->min_corner() : s.grid.origin;
-
-  // Segments in cell order (the kernel walks a cell's segments contiguously), each with its midpoint and
-  // half length for a cheap first test, and its index in the year's list for the exclusions.
-  const std::size_t count = std::max<std::size_t>(segments.size(), 1);
-  s.middle = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
-  s.start = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
-  s.end = cl::Buffer(s.cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count);
-  std::vector<cl_float4> middles, starts, ends;
-  for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
-    const std::size_t count_here = std::min(segments.size() - first, segments_per_upload);
-    middles.resize(count_here);
-    starts.resize(count_here);
-    ends.resize(count_here);
-    // Entries convert independently (a gather from the trees' lists in cell order): blocks of them go to the worker
-    // threads, since this host work is not shortened by a faster device.
-    parallel_for_blocks(count_here, items_per_block, [&](std::size_t from, std::size_t to) {
-      for (std::size_t k = from; k < to; ++k) {
-        const RootSegmentLine segment = segments[static_cast<std::size_t>(s.grid.cell_segments[first + k])];
-        middles[k] = to_float4(0.5 * (segment.start + segment.end) - s.frame, 0.5 * glm::length(segment.end - segment.start));
-        starts[k] = to_float4(segment.start - s.frame);
-        ends[k] = to_float4(segment.end - s.frame);
-      }
-    });
-    write(s.cl.queue, s.middle, middles, first);
-    write(s.cl.queue, s.start, starts, first);
-    write(s.cl.queue, s.end, ends, first);
-  }
+  SegmentsOnDevice segments = segments_on_device(s.cl, year.segments, s.grid, s.frame);
+  s.middle = std::move(segments.middle), s.start = std::move(segments.start), s.end = std::move(segments.end);
   s.segment_id = read_only_buffer(s.cl.context, s.grid.cell_segments);
   s.cell_start = read_only_buffer(s.cl.context, s.grid.cell_start);
   // The device has the grid's index arrays now; the host keeps only its geometry (to sort apices by cell).
   std::vector<int>().swap(s.grid.cell_segments);
   std::vector<int>().swap(s.grid.cell_start);
-
-  std::vector<float> moisture;
-  cl_int4 soil_vertices{{2, 2, 2, 0}};
-  cl_float4 soil_origin{{0, 0, 0, 0}};
-  float soil_spacing = 1.0f;
+  SoilOnDevice soil = soil_on_device(s.cl.context, year.soil, s.frame);
+  s.moisture = std::move(soil.moisture);
   s.has_soil = year.soil != nullptr;
-  if (s.has_soil) {
-    const std::vector<double>& values = year.soil->values(SoilField::moisture);
-    moisture.assign(values.begin(), values.end());
-    const glm::ivec3 n = year.soil->vertex_counts();
-    soil_vertices = {{n.x, n.y, n.z, 0}};
-    soil_origin = to_float4(year.soil->min_corner() - s.frame);
-    soil_spacing = static_cast<float>(year.soil->geometry().spacing_m);
-  }
-  s.moisture = read_only_buffer(s.cl.context, moisture);
 
   s.kernel.setArg(0, s.middle);
   s.kernel.setArg(1, s.start);
@@ -145,9 +166,9 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.kernel.setArg(7, static_cast<float>(s.grid.cell_size_m));
   s.kernel.setArg(8, static_cast<float>(s.grid.longest_half_m));
   s.kernel.setArg(14, s.moisture);
-  s.kernel.setArg(15, soil_vertices);
-  s.kernel.setArg(16, soil_origin);
-  s.kernel.setArg(17, soil_spacing);
+  s.kernel.setArg(15, soil.vertices);
+  s.kernel.setArg(16, soil.origin);
+  s.kernel.setArg(17, soil.spacing);
   s.kernel.setArg(18, static_cast<cl_int>(s.has_soil ? 1 : 0));
   s.has_year = true;
 }
