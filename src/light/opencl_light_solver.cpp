@@ -174,6 +174,15 @@ LightSample sample_of(const cl_float4& result) {
   return sample;
 }
 
+// The first `count` results of a kernel's output buffer, read back (blocking) as samples in the same order.
+std::vector<LightSample> read_samples(const cl::CommandQueue& queue, const cl::Buffer& out, std::size_t count) {
+  std::vector<cl_float4> result(count);
+  queue.enqueueReadBuffer(out, CL_TRUE, 0, count * sizeof(cl_float4), result.data());
+  std::vector<LightSample> samples(count);
+  for (std::size_t k = 0; k < count; ++k) samples[k] = sample_of(result[k]);
+  return samples;
+}
+
 // Entries per axis in SkyData::axes: every patch and eight zeros, since the kernels test runs of eight patches
 // (float8, cl/light.cl) from any patch. The kernels get it as the build option AXIS_STRIDE.
 std::size_t axis_stride(std::size_t patch_count) { return patch_count + 8; }
@@ -261,8 +270,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   if (!parameters_.exact || parameters_.periodic) return LightSolver::solve_each_alone(balls, group_start);
   check_groups(balls, group_start);
   statistics_ = {};
-  std::vector<LightSample> samples(balls.size());
-  if (balls.empty()) return samples;
+  if (balls.empty()) return {};
   const auto start = Clock::now();
   const GroupFrames frames = group_frames(balls, group_start);
   const CelestialSphere sky(parameters_);
@@ -287,9 +295,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_each_alone(std::span<const Lea
   k.setArg(arg++, float(std::log(parameters_.transmittance)));
   k.setArg(arg++, out);
   compute::launch(device_->cl, k, balls.size());
-  std::vector<cl_float4> result(balls.size());
-  device_->cl.queue.enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
-  for (std::size_t i = 0; i < balls.size(); ++i) samples[i] = sample_of(result[i]);
+  std::vector<LightSample> samples = read_samples(device_->cl.queue, out, balls.size());
   statistics_.evaluate_seconds = seconds_since(start);
   return samples;
 }
@@ -443,10 +449,7 @@ std::vector<LightSample> OpenCLLightSolver::solve_exact(const DeviceStand& stand
   k.setArg(arg++, float(stand.torus.size.y));
   k.setArg(arg++, out);
   compute::launch(device_->cl, k, receivers.size());
-  std::vector<cl_float4> result(receivers.size());
-  device_->cl.queue.enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
-  std::vector<LightSample> samples(receivers.size());
-  for (std::size_t k = 0; k < receivers.size(); ++k) samples[k] = sample_of(result[k]);
+  std::vector<LightSample> samples = read_samples(device_->cl.queue, out, receivers.size());
   statistics_.evaluate_seconds = seconds_since(start);
   return samples;
 }

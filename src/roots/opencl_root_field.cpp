@@ -147,6 +147,7 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.frame = year.soil != nullptr ? year.soil->min_corner() : s.grid.origin;
   SegmentsOnDevice segments = segments_on_device(s.cl, year.segments, s.grid, s.frame);
   s.middle = std::move(segments.middle), s.start = std::move(segments.start), s.end = std::move(segments.end);
+  // Each segment's index in the year's list, for the exclusions, and where each cell's segments start.
   s.segment_id = read_only_buffer(s.cl.context, s.grid.cell_segments);
   s.cell_start = read_only_buffer(s.cl.context, s.grid.cell_start);
   // The device has the grid's index arrays now; the host keeps only its geometry (to sort apices by cell).
