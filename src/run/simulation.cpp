@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 
 #include <spdlog/spdlog.h>
 
@@ -99,7 +100,7 @@ class FarFieldCells {
   double coarsest() const { return coarsest_; }
 
  private:
-  const LightParameters& light_;
+  LightParameters light_;  // a copy: the scenario's stand light is made on demand
   bool said_ = false;
   double coarsest_ = 0;
 };
@@ -129,30 +130,75 @@ YearCost year_cost(int year, const Stand& stand, const StageClock& before, const
   return cost;
 }
 
-}  // namespace
-
-SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  RunManifest manifest;
-  manifest.started_utc = utc_now_iso8601();
-  // The backend and solvers first: a device that does not exist must fail before the output folder is taken.
-  // One backend for the whole run: the light of the stand, the open-grown light and the roots share its device.
-  const auto backend = compute::ComputeBackend::open(
-      options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
-  spdlog::info("compute backend (light and roots): {}", backend.name());
-  const LightParameters stand_light = scenario.stand_light();
-  auto solver = make_light_solver(backend, stand_light);
+// The compute backend and the run's two light solvers. One backend for the whole run: the light of the stand, the
+// open-grown light and the roots share its device.
+struct RunSolvers {
+  compute::ComputeBackend backend;
+  std::unique_ptr<LightSolver> stand;
   // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
   // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
   // edges; and it sees the reference sky (sky_scale 1), so a dimmer stand sky lowers every relative light.
+  std::unique_ptr<LightSolver> open_grown;
+};
+
+RunSolvers open_solvers(const Scenario& scenario, const SimulationOptions& options) {
+  auto backend = compute::ComputeBackend::open(
+      options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
+  spdlog::info("compute backend (light and roots): {}", backend.name());
+  const LightParameters stand_light = scenario.stand_light();
   LightParameters open_grown = stand_light;
   open_grown.exact = true;
   open_grown.periodic = false;
   open_grown.sky_scale = 1.0;
+  auto stand_solver = make_light_solver(backend, stand_light);
   auto open_grown_solver = make_light_solver(backend, open_grown);
+  return {std::move(backend), std::move(stand_solver), std::move(open_grown_solver)};
+}
+
+// The run's totals once its last year is grown (the by-year costs and light parts are summed as it goes).
+void close_summary(const Stand& stand, const RootZone* roots, const LightSolver& solver, const StageClock& clock,
+                   const FarFieldCells& far_field_cells, const checkpoint::RunProgress& run_progress,
+                   int first_stand_age, SimulationSummary& summary) {
+  summary.first_stand_age = first_stand_age;
+  summary.last_stand_age = stand.stand_age();
+  count_trees(stand, roots, summary);
+  summary.tree_years = run_progress.tree_years;
+  summary.device = solver.name();
+  summary.light_tile_candidates_per_ball = solver.last_statistics().mean_tile_candidates;
+  summary.light_far_field_cell_m_max = far_field_cells.coarsest();
+  summary.stage_seconds = clock.stages();
+  summary.stage_cpu_seconds = clock.cpu_stages();
+  summary.light_seconds = clock.seconds("light") + clock.seconds("light (open grown)");
+}
+
+// run.json's record of the run. A resumed run records the run it continues: its first command and start
+// (docs/user-guide.md).
+RunManifest run_manifest(const Scenario& scenario, const std::string& device, const SimulationSummary& summary,
+                         const checkpoint::RunProgress& run_progress) {
+  RunManifest manifest;
+  manifest.started_utc = run_progress.started_utc;
+  manifest.command_line = run_progress.command_line;
+  manifest.scenario_path = scenario.file.string();
+  manifest.seed = scenario.run.seed;
+  manifest.device = device;
+  manifest.first_stand_age = summary.first_stand_age;
+  manifest.last_stand_age = summary.last_stand_age;
+  manifest.stage_seconds = summary.stage_seconds;
+  manifest.wall_seconds = summary.wall_seconds;
+  manifest.finished_utc = utc_now_iso8601();
+  return manifest;
+}
+
+}  // namespace
+
+SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  checkpoint::RunProgress run_progress{0, 0.0, utc_now_iso8601(), options.command_line};
+  // The backend and solvers first: a device that does not exist must fail before the output folder is taken.
+  const RunSolvers solvers = open_solvers(scenario, options);
   // Read before the folder is taken: an identity that cannot be formed must not leave a folder behind.
   const checkpoint::RunIdentity identity = options.checkpoint_every_years > 0 || options.resume
-                                               ? run_identity(scenario, backend.name(), options.write_vtk)
+                                               ? run_identity(scenario, solvers.backend.name(), options.write_vtk)
                                                : checkpoint::RunIdentity{};
   StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk,
                       scenario.run.output_detail, options.resume});
@@ -163,16 +209,15 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
               options.resume ? std::vector<StandTree>{} : established_trees(scenario, clock),
               schedule(scenario), competition_for(scenario));
   // Roots and the crown–root coupling (stand/root_zone.hpp): spun up under the established stand.
-  auto roots = options.resume ? make_root_zone(scenario, backend)
-                              : clock.time("roots", [&] { return establish_root_zone(scenario, stand, backend); });
+  auto roots = options.resume ? make_root_zone(scenario, solvers.backend)
+                              : clock.time("roots", [&] { return establish_root_zone(scenario, stand, solvers.backend); });
   if (roots && output.vtk() && scenario.run.roots_output_interval_years > 0)
     add_root_blocks(*output.vtk(), *roots, scenario.run.roots_output_interval_years);
 
-  StandYear simulated_year(stand, *solver, *open_grown_solver, roots ? &*roots : nullptr, &output,
+  StandYear simulated_year(stand, *solvers.stand, *solvers.open_grown, roots ? &*roots : nullptr, &output,
                            {scenario.run.seed, scenario.light.sky_scale, scenario.run.years,
                             scenario.run.output_interval_years},
                            clock);
-  checkpoint::RunProgress run_progress{0, 0.0, manifest.started_utc, options.command_line};
   const checkpoint::RunParts parts{stand, roots ? &*roots : nullptr, output, simulated_year, clock, run_progress};
   int first_year = 0;
   if (options.resume)
@@ -185,48 +230,29 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   };
 
   ProgressLine progress(scenario.run.years, options.show_progress);
-  FarFieldCells far_field_cells(stand_light);
+  FarFieldCells far_field_cells(scenario.stand_light());
   SimulationSummary summary;
+  const LightSolver& solver = *solvers.stand;
   for (int year = first_year; year <= scenario.run.years; ++year) {
     const StageClock before = clock;
     if (year > 0) run_progress.tree_years += living_tree_count(stand);  // the trees that grow this year
     simulated_year.run(year);
-    far_field_cells.after_year(solver->last_statistics(), stand.stand_age());
-    add_light_parts(solver->last_statistics(), summary);
+    far_field_cells.after_year(solver.last_statistics(), stand.stand_age());
+    add_light_parts(solver.last_statistics(), summary);
     if (options.observe_year) options.observe_year(stand, year);
     if (is_checkpoint_year(year, options.checkpoint_every_years, scenario.run.years)) {
       run_progress.wall_seconds = wall_seconds();
       clock.time("checkpoint", [&] { return write_checkpoint(options.output_folder, year, identity, parts); });
     }
-    summary.by_year.push_back(year_cost(year, stand, before, clock, solver->last_statistics()));
+    summary.by_year.push_back(year_cost(year, stand, before, clock, solver.last_statistics()));
     progress.update(year);
   }
   progress.finish();
 
-  summary.first_stand_age = scenario.stand.age_at_survey_years;
-  summary.last_stand_age = stand.stand_age();
-  count_trees(stand, roots ? &*roots : nullptr, summary);
-  summary.tree_years = run_progress.tree_years;
-  summary.device = solver->name();
-  summary.light_tile_candidates_per_ball = solver->last_statistics().mean_tile_candidates;
-  summary.light_far_field_cell_m_max = far_field_cells.coarsest();
-  summary.stage_seconds = clock.stages();
-  summary.stage_cpu_seconds = clock.cpu_stages();
-  summary.light_seconds = clock.seconds("light") + clock.seconds("light (open grown)");
+  close_summary(stand, roots ? &*roots : nullptr, solver, clock, far_field_cells, run_progress,
+                scenario.stand.age_at_survey_years, summary);
   summary.wall_seconds = wall_seconds();
-
-  // A resumed run records the run it continues: its first command and start (docs/user-guide.md).
-  manifest.started_utc = run_progress.started_utc;
-  manifest.command_line = run_progress.command_line;
-  manifest.scenario_path = scenario.file.string();
-  manifest.seed = scenario.run.seed;
-  manifest.device = backend.name();
-  manifest.first_stand_age = summary.first_stand_age;
-  manifest.last_stand_age = summary.last_stand_age;
-  manifest.stage_seconds = clock.stages();
-  manifest.wall_seconds = summary.wall_seconds;
-  manifest.finished_utc = utc_now_iso8601();
-  output.finish(std::move(manifest));
+  output.finish(run_manifest(scenario, solvers.backend.name(), summary, run_progress));
   // The run is finished (run.json written): nothing will resume it.
   checkpoint::prune_checkpoints(options.output_folder, 0);
   return summary;

@@ -15,6 +15,8 @@
 
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
 #include "io/csv_test_reader.hpp"
@@ -71,6 +73,27 @@ void check_every_output_written(const fs::path& folder) {
   for (const auto& entry : fs::recursive_directory_iterator(folder))
     if (entry.is_regular_file()) EXPECT_LE(entry.last_write_time(), manifest_time) << entry.path();
   EXPECT_NE(read_text(folder / "run.json").find("\"light\""), std::string::npos) << "light time in run.json";
+}
+
+// run.json records the run a user would need to reproduce and judge it: the command, the scenario, the seed, the
+// device, the ages grown, when and for how long, and where the time went.
+void check_run_record(const fs::path& folder) {
+  const auto record = nlohmann::json::parse(read_text(folder / "run.json"));
+  EXPECT_NE(record.at("command_line").get<std::string>().find("grow"), std::string::npos);
+  EXPECT_EQ(fs::path(record.at("scenario").get<std::string>()), fs::absolute(tiny).lexically_normal());
+  EXPECT_EQ(record.at("seed").get<std::uint64_t>(), 7u) << "stands/tiny's [run] seed";
+  EXPECT_EQ(record.at("device"), "reference");
+  EXPECT_EQ(record.at("first_stand_age"), 20);
+  EXPECT_EQ(record.at("last_stand_age"), 25);
+  EXPECT_LE(record.at("started_utc").get<std::string>(), record.at("finished_utc").get<std::string>());
+  const double wall = record.at("wall_seconds").get<double>();
+  EXPECT_GT(wall, 0.0);
+  double staged = 0;
+  for (const char* stage : {"establishment", "roots", "light", "growth"}) {
+    ASSERT_TRUE(record.at("stage_seconds").contains(stage)) << stage;
+    staged += record.at("stage_seconds").at(stage).get<double>();
+  }
+  EXPECT_LE(staged, wall) << "the stages are parts of the run's wall time";
 }
 
 void check_thinning(const fs::path& folder) {
@@ -196,6 +219,10 @@ TEST(GrowCli, TinyStandEndToEnd) {
   {
     SCOPED_TRACE("every output written, run.json last");
     check_every_output_written(folder);
+  }
+  {
+    SCOPED_TRACE("run.json records the run");
+    check_run_record(folder);
   }
   {
     SCOPED_TRACE("thinning by id at age 23");
