@@ -77,6 +77,66 @@ glm::dvec3 direction_of(const RootSystem& tree, const RootBud& bud, const RootFi
   return compose_direction(tree.parameters().of(bud.type).tropisms, vectors);
 }
 
+// Every bud of every tree (each tree's from its own streams: in parallel), in the trees' order.
+struct StandBuds {
+  std::vector<std::vector<RootBud>> of_tree;
+  std::vector<std::pair<std::size_t, std::size_t>> every;  // (tree, bud of the tree), tree after tree
+};
+
+StandBuds buds_of(std::span<RootSystem* const> trees, int year, std::uint64_t seed) {
+  StandBuds buds;
+  buds.of_tree.resize(trees.size());
+  parallel_for(trees.size(), [&](std::size_t t) { buds.of_tree[t] = trees[t]->buds(year, seed); });
+  for (std::size_t t = 0; t < trees.size(); ++t)
+    for (std::size_t b = 0; b < buds.of_tree[t].size(); ++b) buds.every.emplace_back(t, b);
+  return buds;
+}
+
+// The field of the year: the roots as they all stand before any of them grows, seen in the trees' own lists (not
+// copied), and the widest perception radius of any bud.
+RootFieldYear field_of(std::span<RootSystem* const> trees, const StandBuds& buds, const SoilGrid& soil) {
+  RootFieldYear field;
+  field.soil = &soil;
+  for (std::size_t t = 0; t < trees.size(); ++t) {
+    field.segments.append(trees[t]->segments());
+    for (const RootBud& bud : buds.of_tree[t])
+      field.widest_perception_radius_m =
+          std::max(field.widest_perception_radius_m, trees[t]->parameters().of(bud.type).perception_radius_m);
+  }
+  return field;
+}
+
+// The composed direction V of every bud: the field at every bud, a chunk of buds per query, so that the queries and
+// their probes (K per bud) never exist for all buds at once. One K for the whole year: the first tree's (species may
+// differ in everything else).
+std::vector<std::vector<glm::dvec3>> bud_directions(std::span<RootSystem* const> trees, const StandBuds& buds,
+                                                    const RootFieldYear& field, RootFieldSolver& solver, int year,
+                                                    std::uint64_t seed, std::size_t buds_per_query) {
+  const int probes_per_tip = trees.empty() ? 0 : trees[0]->parameters().moisture_probes;
+  const auto per_tip = static_cast<std::size_t>(probes_per_tip);
+  std::vector<std::vector<glm::dvec3>> directions(trees.size());
+  for (std::size_t t = 0; t < trees.size(); ++t) directions[t].resize(buds.of_tree[t].size());
+  BudQueries queries;
+  for (std::size_t first = 0; first < buds.every.size(); first += buds_per_query) {
+    queries.buds = std::span(buds.every).subspan(first, std::min(buds_per_query, buds.every.size() - first));
+    queries.tips.resize(queries.buds.size());
+    queries.probes.resize(queries.buds.size() * per_tip);
+    parallel_for(queries.buds.size(), [&](std::size_t q) {
+      const auto [t, b] = queries.buds[q];
+      const RootBud& bud = buds.of_tree[t][b];
+      queries.tips[q] = query_of(*trees[t], bud, field.segments.first_of_part(t));
+      const std::vector<glm::dvec3> drawn = probes_of(*trees[t], bud, probes_per_tip, year, seed);
+      std::copy(drawn.begin(), drawn.end(), queries.probes.begin() + static_cast<std::ptrdiff_t>(q * per_tip));
+    });
+    const std::vector<RootFieldSample> samples = solver.query(queries.tips, queries.probes, probes_per_tip);
+    parallel_for(samples.size(), [&](std::size_t q) {
+      const auto [t, b] = queries.buds[q];
+      directions[t][b] = direction_of(*trees[t], buds.of_tree[t][b], samples[q]);
+    });
+  }
+  return directions;
+}
+
 }  // namespace
 
 RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
@@ -84,58 +144,24 @@ RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, R
   RootYearSummary summary;
   buds_per_query = std::max<std::size_t>(buds_per_query, 1);
 
-  // 1. Buds of every tree (each from its own streams: in parallel), and the field of the year: the roots as they
-  // all stand before any of them grows, seen in the trees' own lists (not copied).
-  std::vector<std::vector<RootBud>> buds(trees.size());
-  parallel_for(trees.size(), [&](std::size_t t) { buds[t] = trees[t]->buds(year, seed); });
-  RootFieldYear field;
-  field.soil = &soil;
-  std::vector<std::pair<std::size_t, std::size_t>> every_bud;
-  for (std::size_t t = 0; t < trees.size(); ++t) {
-    const RootSystem& tree = *trees[t];
-    field.segments.append(tree.segments());
-    for (std::size_t b = 0; b < buds[t].size(); ++b) {
-      every_bud.emplace_back(t, b);
-      field.widest_perception_radius_m =
-          std::max(field.widest_perception_radius_m, tree.parameters().of(buds[t][b].type).perception_radius_m);
-    }
-  }
+  // 1. Buds of every tree, and the field of the year as the roots stand before any grows.
+  const StandBuds buds = buds_of(trees, year, seed);
+  const RootFieldYear field = field_of(trees, buds, soil);
   solver.begin_year(field);
-
-  // 2. The field at every bud, a chunk of buds per query, so that the queries and their probes (K per bud) never
-  // exist for all buds at once. One K for the whole year: the first tree's (species may differ in everything else).
-  const int probes_per_tip = trees.empty() ? 0 : trees[0]->parameters().moisture_probes;
-  const auto per_tip = static_cast<std::size_t>(probes_per_tip);
-  std::vector<std::vector<glm::dvec3>> directions(trees.size());
-  for (std::size_t t = 0; t < trees.size(); ++t) directions[t].resize(buds[t].size());
-  BudQueries queries;
-  for (std::size_t first = 0; first < every_bud.size(); first += buds_per_query) {
-    queries.buds = std::span(every_bud).subspan(first, std::min(buds_per_query, every_bud.size() - first));
-    queries.tips.resize(queries.buds.size());
-    queries.probes.resize(queries.buds.size() * per_tip);
-    parallel_for(queries.buds.size(), [&](std::size_t q) {
-      const auto [t, b] = queries.buds[q];
-      queries.tips[q] = query_of(*trees[t], buds[t][b], field.segments.first_of_part(t));
-      const std::vector<glm::dvec3> drawn = probes_of(*trees[t], buds[t][b], probes_per_tip, year, seed);
-      std::copy(drawn.begin(), drawn.end(), queries.probes.begin() + static_cast<std::ptrdiff_t>(q * per_tip));
-    });
-    const std::vector<RootFieldSample> samples = solver.query(queries.tips, queries.probes, probes_per_tip);
-    parallel_for(samples.size(), [&](std::size_t q) {
-      const auto [t, b] = queries.buds[q];
-      directions[t][b] = direction_of(*trees[t], buds[t][b], samples[q]);
-    });
-  }
+  // 2. The field at every bud, and the direction each bud grows in.
+  const auto directions = bud_directions(trees, buds, field, solver, year, seed, buds_per_query);
   solver.end_year();
 
   // 3. New segments in the composed direction V (each tree its own: in parallel; the soil is only read).
   std::vector<int> removed(trees.size(), 0);
   parallel_for(trees.size(), [&](std::size_t t) {
     RootSystem& tree = *trees[t];
-    for (std::size_t b = 0; b < buds[t].size(); ++b) tree.add_segment(buds[t][b], directions[t][b], year, soil);
+    for (std::size_t b = 0; b < buds.of_tree[t].size(); ++b)
+      tree.add_segment(buds.of_tree[t][b], directions[t][b], year, soil);
     // 4. Close the year.
     removed[t] = tree.finish_year(year);
   });
-  summary.new_segments += static_cast<int>(every_bud.size());
+  summary.new_segments += static_cast<int>(buds.every.size());
   for (int r : removed) summary.removed_segments += r;
 
   // 5. Uptake, tree after tree (depletion multiplies vertex values, so the soil it leaves does not
