@@ -61,34 +61,44 @@ ReferenceLightSolver::ReferenceLightSolver(const LightParameters& parameters) : 
 std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBall> balls,
                                                          std::span<const std::uint32_t> receivers) {
   check_receivers(balls, receivers);
+  statistics_ = {};
   const CelestialSphere sky(parameters_);
+  return parameters_.exact ? solve_exact(balls, receivers, sky) : solve_culled(balls, receivers, sky);
+}
+
+std::vector<LightSample> ReferenceLightSolver::solve_exact(std::span<const LeafBall> balls,
+                                                           std::span<const std::uint32_t> receivers,
+                                                           const CelestialSphere& sky) {
   const PlotTorus torus = PlotTorus::from(parameters_);
   const double t = parameters_.transmittance;
-  statistics_ = {};
   std::vector<LightSample> samples(receivers.size());  // each written by the thread that lights its receiver
+  const OccluderSet set = make_occluder_set(balls, torus, 0.0);
+  const auto start = Clock::now();
+  // Receivers on the worker threads: each sample is its own receiver's alone, computed as on one thread.
+  parallel_for(receivers.size(), [&](std::size_t k) {
+    const std::uint32_t i = receivers[k];
+    std::vector<double> intensity;  // B(h, v)
+    intensity.reserve(sky.patches().size());
+    for (const auto& patch : sky.patches()) {
+      double b = patch.initial_intensity;
+      for_each_exact_occluder(set, torus, i, [&](const glm::dvec3& centre, double radius) {
+        if (ray_hits_ball(set.centres[i], patch.direction, centre, radius)) b *= t;
+      });
+      intensity.push_back(b);
+    }
+    samples[k] = light_sample(sky, intensity);
+  });
+  statistics_.evaluate_seconds = seconds_since(start);
+  statistics_.mean_candidates = torus.periodic ? 9.0 * balls.size() - 1 : double(balls.size()) - 1;
+  return samples;
+}
 
-  if (parameters_.exact) {
-    const OccluderSet set = make_occluder_set(balls, torus, 0.0);
-    const auto start = Clock::now();
-    // Receivers on the worker threads: each sample is its own receiver's alone, computed as on one thread.
-    parallel_for(receivers.size(), [&](std::size_t k) {
-      const std::uint32_t i = receivers[k];
-      std::vector<double> intensity;  // B(h, v)
-      intensity.reserve(sky.patches().size());
-      for (const auto& patch : sky.patches()) {
-        double b = patch.initial_intensity;
-        for_each_exact_occluder(set, torus, i, [&](const glm::dvec3& centre, double radius) {
-          if (ray_hits_ball(set.centres[i], patch.direction, centre, radius)) b *= t;
-        });
-        intensity.push_back(b);
-      }
-      samples[k] = light_sample(sky, intensity);
-    });
-    statistics_.evaluate_seconds = seconds_since(start);
-    statistics_.mean_candidates = torus.periodic ? 9.0 * balls.size() - 1 : double(balls.size()) - 1;
-    return samples;
-  }
-
+std::vector<LightSample> ReferenceLightSolver::solve_culled(std::span<const LeafBall> balls,
+                                                            std::span<const std::uint32_t> receivers,
+                                                            const CelestialSphere& sky) {
+  const PlotTorus torus = PlotTorus::from(parameters_);
+  const double t = parameters_.transmittance;
+  std::vector<LightSample> samples(receivers.size());  // each written by the thread that lights its receiver
   auto start = Clock::now();
   const OccluderSet set = make_occluder_set(balls, torus, parameters_.cutoff_m);
   const NearFieldSearch search(set, parameters_.cutoff_m);

@@ -9,6 +9,8 @@
 
 namespace heliostand {
 
+class CelestialSphere;
+
 class ReferenceLightSolver final : public LightSolver {
  public:
   explicit ReferenceLightSolver(const LightParameters& parameters);
@@ -17,6 +19,12 @@ class ReferenceLightSolver final : public LightSolver {
                                      std::span<const std::uint32_t> receivers) override;
 
  private:
+  // Each writes statistics_ (cleared by solve_for) as it goes.
+  std::vector<LightSample> solve_exact(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers,
+                                       const CelestialSphere& sky);
+  std::vector<LightSample> solve_culled(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers,
+                                        const CelestialSphere& sky);
+
   LightParameters parameters_;
 };
 
