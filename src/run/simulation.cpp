@@ -133,7 +133,7 @@ YearCost year_cost(int year, const Stand& stand, const StageClock& before, const
 // The compute backend and the run's two light solvers. One backend for the whole run: the light of the stand, the
 // open-grown light and the roots share its device.
 struct RunSolvers {
-  compute::ComputeBackend backend;
+  compute::ComputeBackend backend;  // first: the solvers refer to its device, so they go before it does
   std::unique_ptr<LightSolver> stand;
   // The open-grown reference (each tree alone, once a year): a few hundred balls, so the exact solver is cheapest
   // (culling and far field only pay off for a whole stand); a tree alone is not repeated across periodic plot
