@@ -63,13 +63,13 @@ std::vector<LightSample> ReferenceLightSolver::solve_for(std::span<const LeafBal
   check_receivers(balls, receivers);
   statistics_ = {};
   const CelestialSphere sky(parameters_);
-  return parameters_.exact ? solve_exact(balls, receivers, sky) : solve_culled(balls, receivers, sky);
+  const PlotTorus torus = PlotTorus::from(parameters_);
+  return parameters_.exact ? solve_exact(balls, receivers, sky, torus) : solve_culled(balls, receivers, sky, torus);
 }
 
 std::vector<LightSample> ReferenceLightSolver::solve_exact(std::span<const LeafBall> balls,
                                                            std::span<const std::uint32_t> receivers,
-                                                           const CelestialSphere& sky) {
-  const PlotTorus torus = PlotTorus::from(parameters_);
+                                                           const CelestialSphere& sky, const PlotTorus& torus) {
   const double t = parameters_.transmittance;
   std::vector<LightSample> samples(receivers.size());  // each written by the thread that lights its receiver
   const OccluderSet set = make_occluder_set(balls, torus, 0.0);
@@ -95,8 +95,7 @@ std::vector<LightSample> ReferenceLightSolver::solve_exact(std::span<const LeafB
 
 std::vector<LightSample> ReferenceLightSolver::solve_culled(std::span<const LeafBall> balls,
                                                             std::span<const std::uint32_t> receivers,
-                                                            const CelestialSphere& sky) {
-  const PlotTorus torus = PlotTorus::from(parameters_);
+                                                            const CelestialSphere& sky, const PlotTorus& torus) {
   const double t = parameters_.transmittance;
   std::vector<LightSample> samples(receivers.size());  // each written by the thread that lights its receiver
   auto start = Clock::now();

@@ -10,6 +10,7 @@
 namespace heliostand {
 
 class CelestialSphere;
+struct PlotTorus;
 
 class ReferenceLightSolver final : public LightSolver {
  public:
@@ -21,9 +22,9 @@ class ReferenceLightSolver final : public LightSolver {
  private:
   // Each writes statistics_ (cleared by solve_for) as it goes.
   std::vector<LightSample> solve_exact(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers,
-                                       const CelestialSphere& sky);
+                                       const CelestialSphere& sky, const PlotTorus& torus);
   std::vector<LightSample> solve_culled(std::span<const LeafBall> balls, std::span<const std::uint32_t> receivers,
-                                        const CelestialSphere& sky);
+                                        const CelestialSphere& sky, const PlotTorus& torus);
 
   LightParameters parameters_;
 };
