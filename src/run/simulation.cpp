@@ -100,7 +100,7 @@ class FarFieldCells {
   double coarsest() const { return coarsest_; }
 
  private:
-  LightParameters light_;  // a copy: the scenario's stand light is made on demand
+  const LightParameters& light_;
   bool said_ = false;
   double coarsest_ = 0;
 };
@@ -141,11 +141,11 @@ struct RunSolvers {
   std::unique_ptr<LightSolver> open_grown;
 };
 
-RunSolvers open_solvers(const Scenario& scenario, const SimulationOptions& options) {
+RunSolvers open_solvers(const Scenario& scenario, const SimulationOptions& options,
+                        const LightParameters& stand_light) {
   auto backend = compute::ComputeBackend::open(
       options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
   spdlog::info("compute backend (light and roots): {}", backend.name());
-  const LightParameters stand_light = scenario.stand_light();
   LightParameters open_grown = stand_light;
   open_grown.exact = true;
   open_grown.periodic = false;
@@ -195,7 +195,8 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const auto started = std::chrono::steady_clock::now();
   checkpoint::RunProgress run_progress{0, 0.0, utc_now_iso8601(), options.command_line};
   // The backend and solvers first: a device that does not exist must fail before the output folder is taken.
-  const RunSolvers solvers = open_solvers(scenario, options);
+  const LightParameters stand_light = scenario.stand_light();
+  const RunSolvers solvers = open_solvers(scenario, options, stand_light);
   // Read before the folder is taken: an identity that cannot be formed must not leave a folder behind.
   const checkpoint::RunIdentity identity = options.checkpoint_every_years > 0 || options.resume
                                                ? run_identity(scenario, solvers.backend.name(), options.write_vtk)
@@ -230,7 +231,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   };
 
   ProgressLine progress(scenario.run.years, options.show_progress);
-  FarFieldCells far_field_cells(scenario.stand_light());
+  FarFieldCells far_field_cells(stand_light);
   SimulationSummary summary;
   const LightSolver& solver = *solvers.stand;
   for (int year = first_year; year <= scenario.run.years; ++year) {
