@@ -6,6 +6,7 @@ Draws the macro's picture of one year (default: the last) into OUT.png, prints i
 the picture: not blank, several colours), and checks against trees.csv and the year's multiblock:
 - every block of the year is drawn, except those the view leaves out on purpose (`trees`, `soil`, and
   `crown_envelope` when `branches` is drawn, `leaf_balls` when `foliage` is), and each is visible;
+- each drawn block shows the year asked for (the data its display rendered carries that time);
 - the trees the drawn blocks show (distinct `tree_id`) are the trees trees.csv lists at that age: the stem or
   branches of every one of them, the foliage of every living tree with leaf balls, and nothing of another tree.
 Exit status 1 with a message when something is missing.
@@ -63,6 +64,13 @@ def tree_ids_shown(source, age):
     return ids
 
 
+def drawn_age(display):
+    """The stand age of the data `display` draws (what the render used, not what the checks below update), or
+    None when the data carries no time."""
+    information = display.GetRepresentedDataInformation()  # a vtkPVDataInformation
+    return information.GetTime() if information.GetHasTime() else None
+
+
 def problems_of(pvd, trees_csv, shown, age):
     expected = blocks_in_year(pvd, age) - NOT_DRAWN
     if "branches" in expected:
@@ -76,8 +84,12 @@ def problems_of(pvd, trees_csv, shown, age):
     leafy = {t for t, (status, balls) in trees.items() if status == "alive" and balls > 0}
     visible = set()
     for name, source in sorted(shown.items()):
-        if not GetDisplayProperties(source).Visibility:
+        display = GetDisplayProperties(source)
+        if not display.Visibility:
             problems.append("block %s is hidden" % name)
+        drawn_at = drawn_age(display)
+        if drawn_at is None or abs(drawn_at - age) > 1e-6:
+            problems.append("block %s is drawn at stand age %s, not %g" % (name, drawn_at, age))
         ids = tree_ids_shown(source, age)
         visible |= ids
         print("%s: %d trees drawn" % (name, len(ids)))

@@ -42,7 +42,9 @@ def stand_pictures(pvd, out, name, thinning_ages, written):
         times = time_steps(reader)
         view = new_view(SIZE, SKY)
         standard_view(reader, pvd, view, LIVING if living_only else None)
-        for age in ages if ages is not None else sorted({times[0], times[-1]}):
+        # The last year first: standard_view left its geometry built (docs/formats.md, "Each block shown at the
+        # last year first").
+        for age in sorted(ages if ages is not None else {times[0], times[-1]}, reverse=True):
             view.ViewTime = age
             suffix = "-thinned" if living_only else ""
             save(view, os.path.join(out, "%s-age-%d%s.png" % (name, age, suffix)), written)

@@ -46,13 +46,15 @@ def main(argv):
                          (", ".join("%g" % a for a in missing), ", ".join("%g" % t for t in times)))
         return 2
     written = []
-    for t in sorted(set(ages) if ages else {times[0], times[-1]}):
+    # The last year first: standard_view left its geometry built (docs/formats.md, "Each block shown at the last
+    # year first").
+    for t in sorted(set(ages) if ages else {times[0], times[-1]}, reverse=True):
         view.ViewTime = t
         Render(view)
         name = os.path.join(out_dir, "stand_age_%04d.png" % int(round(t)))
         SaveScreenshot(name, view, ImageResolution=IMAGE_SIZE)
         written.append(name)
-    for name in written:
+    for name in sorted(written):
         print(name)
     # Release the render window while the X display still exists: left to interpreter teardown,
     # pvbatch 5.11 under xvfb-run fails with GLXBadContext and exit status 1 after the images are saved.

@@ -113,7 +113,7 @@ def show_crowns(source, view):
 def show_envelopes(source, view):
     """Crown envelopes, coloured by the light at each corner (point data: the nearest leaf ball's), so a crown
     shows its lit top and shaded base; series written before the envelopes had it: their tree's mean (cell data)."""
-    source.UpdatePipeline()
+    source.UpdatePipeline(view.ViewTime)  # at the view's time (the last year): without a time, the first
     corners = "light" in source.PointData.keys()
     colour_by_light(Show(source, view), "POINTS" if corners else "CELLS", view)
     return source
@@ -212,6 +212,8 @@ def frame_stand(view, bounds):
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.ResetCamera(False)
     view.GetActiveCamera().Dolly(1.25)  # ResetCamera fits the bounding sphere, which leaves wide margins
+    # In pvbatch, paraview.simple's first Render() resets the camera once more, to what it draws, without the dolly:
+    # the scripts draw the last year first, so that is the last year's frame.
 
 
 def time_steps(reader):
@@ -225,12 +227,15 @@ def time_steps(reader):
 
 
 def standard_view(reader, pvd, view, only=None):
-    """The whole standard view on `view`, framed on the last (largest) year. Returns {block: shown source}.
-    `only`: the cells to keep (block()), e.g. LIVING leaves out the trees that died or were removed since the
-    previous output year."""
-    shown = show_stand(reader, pvd, view, only)
+    """The whole standard view on `view`, framed on the last (largest) year, which it leaves the view at. Returns
+    {block: shown source}. `only`: the cells to keep (block()), e.g. LIVING leaves out the trees that died or were
+    removed since the previous output year."""
     last = time_steps(reader)[-1]
+    # The view's time is set before the blocks are shown: Show builds each block's geometry (tubes, glyphs) at the
+    # view's time, and left at its default it would build the first year's, to be built again for the picture of
+    # the last (docs/formats.md, "Each block shown at the last year first"). Callers draw the last year first.
     view.ViewTime = last
+    shown = show_stand(reader, pvd, view, only)
     reader.UpdatePipeline(last)
     bounds = reader.GetDataInformation().GetBounds()
     show_ground(bounds, view, below_roots="roots" in shown)
