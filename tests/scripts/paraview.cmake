@@ -29,30 +29,22 @@ set_tests_properties(io.paraview.render_tiny_stand PROPERTIES
 heliostand_render_test(io.paraview.render_tiny_stand)
 
 # The one-step view (validation/paraview/heliostand_view.py, the macro users load in ParaView) in pvbatch on the same
-# stand's last year: check_view.py checks that it draws every block and every tree trees.csv lists that year, and
-# run_pvbatch.sh that the picture is not blank.
-add_test(NAME io.paraview.view_tiny_stand
-         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
-                 ${PROJECT_SOURCE_DIR}/validation/paraview/check_view.py ${PROJECT_BINARY_DIR}/tests/paraview/view
-                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/stand.pvd
-                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/trees.csv
-                 ${PROJECT_BINARY_DIR}/tests/paraview/view/tiny_stand_view.png)
-set_tests_properties(io.paraview.view_tiny_stand PROPERTIES
-  FIXTURES_REQUIRED heliostand_tiny_stand_series
-  TIMEOUT 600)
-heliostand_render_test(io.paraview.view_tiny_stand)
-# The same view of a year before the last (heliostand_view.py --age): every block must be drawn at that year, not
-# at the last one the view is framed on (check_view.py reads the time of the data each display rendered).
-add_test(NAME io.paraview.view_tiny_stand_first_year
-         COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
-                 ${PROJECT_SOURCE_DIR}/validation/paraview/check_view.py ${PROJECT_BINARY_DIR}/tests/paraview/view_first_year
-                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/stand.pvd
-                 ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/trees.csv
-                 ${PROJECT_BINARY_DIR}/tests/paraview/view_first_year/tiny_stand_view.png 10)
-set_tests_properties(io.paraview.view_tiny_stand_first_year PROPERTIES
-  FIXTURES_REQUIRED heliostand_tiny_stand_series
-  TIMEOUT 600)
-heliostand_render_test(io.paraview.view_tiny_stand_first_year)
+# stand: check_view.py checks that it draws every block and every tree trees.csv lists that year, each block at that
+# year, and run_pvbatch.sh that the picture is not blank. ARGN: the stand age to draw (default: the last year).
+function(heliostand_tiny_stand_view_test name folder)
+  set(out ${PROJECT_BINARY_DIR}/tests/paraview/${folder})
+  add_test(NAME ${name}
+           COMMAND sh ${PROJECT_SOURCE_DIR}/validation/paraview/run_pvbatch.sh
+                   ${PROJECT_SOURCE_DIR}/validation/paraview/check_view.py ${out}
+                   ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/stand.pvd
+                   ${PROJECT_BINARY_DIR}/tests/paraview/tiny_stand/trees.csv ${out}/tiny_stand_view.png ${ARGN})
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED heliostand_tiny_stand_series TIMEOUT 600)
+  heliostand_render_test(${name})
+endfunction()
+heliostand_tiny_stand_view_test(io.paraview.view_tiny_stand view)
+# A year before the last (heliostand_view.picture's age): every block must be drawn at that year, not at the last
+# one standard_view leaves the view at.
+heliostand_tiny_stand_view_test(io.paraview.view_tiny_stand_first_year view_first_year 10)
 
 # The README's first command grows the example stand into out/sobetsu and renders its first and last year
 # into out/sobetsu/pictures (render.sh checks them as it writes them). This test checks those pictures again,

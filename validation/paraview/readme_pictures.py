@@ -16,7 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pvbatch_common import new_view  # noqa: E402
-from stand_view import LIVING, SKY, standard_view, time_steps  # noqa: E402
+from stand_view import LIVING, SKY, last_year_first, standard_view, time_steps  # noqa: E402
 
 from paraview.simple import Delete, Disk, PVDReader, Render, SaveScreenshot, Show  # noqa: E402
 
@@ -42,9 +42,7 @@ def stand_pictures(pvd, out, name, thinning_ages, written):
         times = time_steps(reader)
         view = new_view(SIZE, SKY)
         standard_view(reader, pvd, view, LIVING if living_only else None)
-        # The last year first: standard_view left its geometry built (docs/formats.md, "Each block shown at the
-        # last year first").
-        for age in sorted(ages if ages is not None else {times[0], times[-1]}, reverse=True):
+        for age in last_year_first(ages if ages is not None else {times[0], times[-1]}):
             view.ViewTime = age
             suffix = "-thinned" if living_only else ""
             save(view, os.path.join(out, "%s-age-%d%s.png" % (name, age, suffix)), written)

@@ -13,7 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pvbatch_common import new_view  # noqa: E402
-from stand_view import SKY, standard_view, time_steps  # noqa: E402
+from stand_view import SKY, last_year_first, standard_view, time_steps  # noqa: E402
 
 from paraview.simple import Delete, PVDReader, Render, SaveScreenshot  # noqa: E402
 
@@ -46,9 +46,7 @@ def main(argv):
                          (", ".join("%g" % a for a in missing), ", ".join("%g" % t for t in times)))
         return 2
     written = []
-    # The last year first: standard_view left its geometry built (docs/formats.md, "Each block shown at the last
-    # year first").
-    for t in sorted(set(ages) if ages else {times[0], times[-1]}, reverse=True):
+    for t in last_year_first(set(ages) if ages else {times[0], times[-1]}):
         view.ViewTime = t
         Render(view)
         name = os.path.join(out_dir, "stand_age_%04d.png" % int(round(t)))

@@ -226,6 +226,12 @@ def time_steps(reader):
         return [values]
 
 
+def last_year_first(ages):
+    """`ages` in the order to draw them after standard_view: newest first, so that the last year, whose geometry it
+    left built, is drawn before any other when it is among them (the camera stays the first picture's)."""
+    return sorted(ages, reverse=True)
+
+
 def standard_view(reader, pvd, view, only=None):
     """The whole standard view on `view`, framed on the last (largest) year, which it leaves the view at. Returns
     {block: shown source}. `only`: the cells to keep (block()), e.g. LIVING leaves out the trees that died or were
@@ -233,7 +239,7 @@ def standard_view(reader, pvd, view, only=None):
     last = time_steps(reader)[-1]
     # The view's time is set before the blocks are shown: Show builds each block's geometry (tubes, glyphs) at the
     # view's time, and left at its default it would build the first year's, to be built again for the picture of
-    # the last (docs/formats.md, "Each block shown at the last year first"). Callers draw the last year first.
+    # the last (docs/formats.md, "Each block shown at the last year first"). Callers draw in last_year_first's order.
     view.ViewTime = last
     shown = show_stand(reader, pvd, view, only)
     reader.UpdatePipeline(last)
