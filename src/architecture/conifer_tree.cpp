@@ -20,6 +20,7 @@
 #include "geometry/angles.hpp"
 #include "geometry/compass_sector.hpp"
 #include "rng/random_stream.hpp"
+#include "geometry/vertical.hpp"
 
 namespace heliostand {
 
@@ -28,7 +29,6 @@ namespace {
 // Random-stream tags: each (tree, year, organ kind, axis) draws from its own stream.
 enum Organ : std::uint64_t { kWhorl = 1, kLateralPair = 2 };
 
-const glm::dvec3 up{0.0, 0.0, 1.0};
 
 // Unit vector at `angle` from the vertical, leaning towards `azimuth` (x east = 0, counter-clockwise).
 glm::dvec3 direction_from(double angle_from_vertical, double azimuth) {
@@ -50,7 +50,7 @@ double shoot_length(const Shoot& shoot) { return glm::length(shoot.tip - shoot.b
 
 // Tilt a direction up (positive angle) or down in its own vertical plane.
 glm::dvec3 tilt_up(glm::dvec3 direction, double angle) {
-  const glm::dvec3 towards_up = up - glm::dot(up, direction) * direction;
+  const glm::dvec3 towards_up = vertical_up - glm::dot(vertical_up, direction) * direction;
   const double norm = glm::length(towards_up);
   if (norm < 1e-9) return direction;  // vertical: no plane to tilt in
   return std::cos(angle) * direction + std::sin(angle) * (towards_up / norm);
@@ -248,7 +248,8 @@ void ConiferTree::grow_stem(double height_growth_m) {
   const auto& stem = axes_[0].shoots;
   const int leader = stem.empty() ? -1 : stem.back();
   const double relative_light = leader < 0 ? 1.0 : shoots_[leader].relative_light;
-  const int shoot = add_shoot(0, leader, stem_base_ + up * height_m_, stem_base_ + up * (height_m_ + height_growth_m));
+  const int shoot = add_shoot(0, leader, stem_base_ + vertical_up * height_m_,
+                              stem_base_ + vertical_up * (height_m_ + height_growth_m));
   shoots_[shoot].relative_light = relative_light;  // until the new leader is lit
   height_m_ += height_growth_m;
 }
@@ -310,7 +311,7 @@ void ConiferTree::sprout_laterals(int parent_axis, int bearing_shoot) {
   RandomStream random(seed_, {static_cast<std::uint64_t>(tree_id_), static_cast<std::uint64_t>(age_), kLateralPair,
                               static_cast<std::uint64_t>(axes_[parent_axis].id)});
   const glm::dvec3 along = glm::normalize(bearing.tip - bearing.base);
-  glm::dvec3 side = glm::cross(along, up);
+  glm::dvec3 side = glm::cross(along, vertical_up);
   side = glm::length(side) < 1e-9 ? glm::dvec3{1.0, 0.0, 0.0} : glm::normalize(side);
   const double spread = radians(species_.second_order_branch_angle_deg);
   for (double sign : {1.0, -1.0}) {

@@ -8,11 +8,11 @@
 
 #include "geometry/angles.hpp"
 #include "rng/random_stream.hpp"
+#include "geometry/vertical.hpp"
 
 namespace heliostand {
 
 namespace {
-const glm::dvec3 up{0.0, 0.0, 1.0};
 enum Stream : std::uint64_t { kThresholds = 1, kVerticalPlanes = 2 };
 }  // namespace
 
@@ -49,7 +49,7 @@ glm::dvec3 DichotomyTree::direction(int index) const {
 // the parent. A vertical parent has no steepest slope: its plane gets a random azimuth.
 std::array<glm::dvec3, 2> DichotomyTree::child_directions(int parent) {
   const glm::dvec3 along = direction(parent);
-  glm::dvec3 across = glm::cross(along, up);
+  glm::dvec3 across = glm::cross(along, vertical_up);
   if (glm::length(across) < 1e-9) {
     RandomStream random(seed_, {kVerticalPlanes, static_cast<std::uint64_t>(generation_),
                                 static_cast<std::uint64_t>(parent)});

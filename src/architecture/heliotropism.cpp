@@ -1,4 +1,5 @@
 #include "architecture/heliotropism.hpp"
+#include "geometry/vertical.hpp"
 
 #include <cmath>
 
@@ -14,8 +15,7 @@ glm::dvec3 heliotropic_direction(glm::dvec3 direction, glm::dvec3 light_vector, 
   glm::dvec3 across = to - glm::dot(to, from) * from;
   if (glm::length(across) < 1e-12) {
     if (glm::dot(to, from) > 0.0) return from;  // already along the light
-    const glm::dvec3 up{0.0, 0.0, 1.0};
-    across = up - glm::dot(up, from) * from;
+    across = vertical_up - glm::dot(vertical_up, from) * from;
     if (glm::length(across) < 1e-12) across = {1.0, 0.0, 0.0};
   }
   across = glm::normalize(across);

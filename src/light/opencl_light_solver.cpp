@@ -21,14 +21,12 @@
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
+#include "core/seconds_since.hpp"
 
 namespace heliostand {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Receivers per culled kernel launch (the candidate lists are per tile and go to the device once).
 constexpr std::size_t culled_chunk = std::size_t(1) << 18;

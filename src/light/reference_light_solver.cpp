@@ -12,14 +12,12 @@
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
+#include "core/seconds_since.hpp"
 
 namespace heliostand {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Exact mode: every ball of the stand, plus in periodic mode its 8 images across the plot edges
 // (the receiver's own images included: on a torus they are other copies of the canopy).

@@ -11,8 +11,6 @@
 namespace heliostand {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 void require_positive_area(double plot_area_ha) {
   if (!(plot_area_ha > 0)) throw std::invalid_argument("stand metrics: plot area must be > 0 ha");
 }
@@ -30,7 +28,7 @@ int top_height_tree_count(double plot_area_ha) {
 }
 
 double top_height_m(std::span<const TreeMeasurement> trees, double plot_area_ha) {
-  if (trees.empty()) return kNaN;
+  if (trees.empty()) return undefined_mean;
   std::vector<const TreeMeasurement*> by_dbh;
   for (const TreeMeasurement& tree : trees) by_dbh.push_back(&tree);
   std::stable_sort(by_dbh.begin(), by_dbh.end(),
@@ -57,10 +55,10 @@ StandMetrics measure_stand(std::span<const TreeMeasurement> trees, double plot_a
   }
   m.basal_area_m2_per_ha = basal_area / plot_area_ha;
   m.volume_m3_per_ha = volume / plot_area_ha;
-  m.qmd_cm = trees.empty() ? kNaN : std::sqrt(dbh_squared / n);
-  m.mean_height_m = trees.empty() ? kNaN : height / n;
+  m.qmd_cm = trees.empty() ? undefined_mean : std::sqrt(dbh_squared / n);
+  m.mean_height_m = trees.empty() ? undefined_mean : height / n;
   // Trees below breast height have no basal area and no weight: without a stem at 1.3 m, Hg is undefined.
-  m.hg_m = basal_area > 0 ? basal_area_times_height / basal_area : kNaN;
+  m.hg_m = basal_area > 0 ? basal_area_times_height / basal_area : undefined_mean;
   m.top_height_m = top_height_m(trees, plot_area_ha);
   return m;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Stand-level forestry metrics of a set of living trees on a plot, per hectare: the living part of a
 // stand_table.csv row (docs/formats.md; the rows themselves: records/stand_table_ledger.hpp).
+#include <limits>
 #include <span>
 #include <string>
 
@@ -8,6 +9,9 @@ namespace heliostand {
 
 // Basal area of one stem, m²: its cross-section at breast height, π (d/200)², DBH in cm.
 double basal_area_m2(double dbh_cm);
+
+// A mean over no tree, or a rate over no year: NaN, which the tables write as an empty field.
+inline constexpr double undefined_mean = std::numeric_limits<double>::quiet_NaN();
 
 // What a stand metric needs from one tree.
 struct TreeMeasurement {

@@ -9,8 +9,6 @@
 namespace heliostand {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 void add(PerHectare& flow, const TreeEvent& event, double plot_area_ha) {
   flow.stems += 1.0 / plot_area_ha;
   flow.basal_area_m2 += basal_area_m2(event.dbh_cm) / plot_area_ha;
@@ -102,10 +100,10 @@ void StandTableLedger::book_production(StandTableRow& row, Production& productio
   production.gone_volume_m3_per_ha += row.removed.volume_m3 + row.dead.volume_m3;
   row.total_production_m3_per_ha = row.living.volume_m3_per_ha + production.gone_volume_m3_per_ha;
   row.cai_m3_per_ha = std::isnan(production.last_total_m3_per_ha)
-                          ? kNaN
+                          ? undefined_mean
                           : row.total_production_m3_per_ha - production.last_total_m3_per_ha;
   production.last_total_m3_per_ha = row.total_production_m3_per_ha;
-  row.mai_m3_per_ha = row.stand_age > 0 ? row.total_production_m3_per_ha / row.stand_age : kNaN;
+  row.mai_m3_per_ha = row.stand_age > 0 ? row.total_production_m3_per_ha / row.stand_age : undefined_mean;
 }
 
 }  // namespace heliostand

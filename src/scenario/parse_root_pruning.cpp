@@ -9,7 +9,8 @@ namespace heliostand::scenario_detail {
 
 namespace {
 
-void parse_event(const toml::table& table, const std::string& path, ScenarioDraft& draft, ScenarioProblems& problems) {
+void parse_root_pruning_event(const toml::table& table, const std::string& path, ScenarioDraft& draft,
+                              ScenarioProblems& problems) {
   TomlTableReader reader(table, path, problems);
   RootPruningEvent event;
   event.line = reader.line();
@@ -61,7 +62,9 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
 
 void parse_root_pruning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
   for_each_table_of_array(node, "root_pruning", problems,
-                          [&](const toml::table& table, const std::string& path) { parse_event(table, path, draft, problems); });
+                          [&](const toml::table& table, const std::string& path) {
+                            parse_root_pruning_event(table, path, draft, problems);
+                          });
 }
 
 }  // namespace heliostand::scenario_detail

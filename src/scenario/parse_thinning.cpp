@@ -191,7 +191,8 @@ ScenarioDraft::ThinningKeys key_lines(const TomlTableReader& reader, const std::
   return keys;
 }
 
-void parse_event(const toml::table& table, const std::string& path, ScenarioDraft& draft, ScenarioProblems& problems) {
+void parse_thinning_event(const toml::table& table, const std::string& path, ScenarioDraft& draft,
+                          ScenarioProblems& problems) {
   TomlTableReader reader(table, path, problems);
   ThinningEvent event;
   event.line = reader.line();
@@ -226,7 +227,9 @@ void parse_event(const toml::table& table, const std::string& path, ScenarioDraf
 
 void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
   for_each_table_of_array(node, "thinning", problems,
-                          [&](const toml::table& table, const std::string& path) { parse_event(table, path, draft, problems); });
+                          [&](const toml::table& table, const std::string& path) {
+                            parse_thinning_event(table, path, draft, problems);
+                          });
 }
 
 }  // namespace heliostand::scenario_detail

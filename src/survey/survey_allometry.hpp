@@ -8,10 +8,9 @@
 // are ours, chosen so that a 35-year Todomatsu plantation (heights 14-18 m, DBH 16-26 cm) gets crown radii
 // of 1.4-2.1 m and crown bases of 6-8 m, the sizes of Hokkaido plantation surveys.
 #include "architecture/species.hpp"
+#include "architecture/stem_taper.hpp"  // breast_height_m
 
 namespace heliostand {
-
-inline constexpr double breast_height_m = 1.3;
 
 struct SurveyAllometry {
   double crown_radius_intercept_m = 0.25;  // crown radius (m) = intercept + slope * DBH (cm)

@@ -1,0 +1,11 @@
+#pragma once
+// Wall-clock seconds from `start` to now, on the steady clock the solvers time their parts with.
+#include <chrono>
+
+namespace heliostand {
+
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace heliostand
