@@ -15,15 +15,14 @@
 #include "light/occluders.hpp"
 #include "rng/random_stream.hpp"
 #include "geometry/angles.hpp"
+#include "geometry/vector_checks.hpp"
 
 namespace heliostand {
 namespace {
 
 const DeathThreshold never_dies{-10.0, 0.0};
 
-double angle_between(glm::dvec3 a, glm::dvec3 b) {
-  return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0));
-}
+using testing::angle_between;
 
 TEST(DichotomyTree, RootBranchIsVerticalAndFifteenTimesLonger) {
   DichotomyTree tree({root_branch({1.0, 2.0, 0.0}, 15.0)}, 10.0, 1);

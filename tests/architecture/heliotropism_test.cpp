@@ -8,13 +8,12 @@
 #include "architecture/death_threshold.hpp"
 #include "architecture/heliotropism.hpp"
 #include "geometry/angles.hpp"
+#include "geometry/vector_checks.hpp"
 
 namespace heliostand {
 namespace {
 
-double angle_between(glm::dvec3 a, glm::dvec3 b) {
-  return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0));
-}
+using testing::angle_between;
 
 TEST(Heliotropism, HorizontalBranchUnderZenithLightRisesByIOfTheRightAngle) {
   // 90° between branch and light; I = 0.4 turns it 36° up, in the vertical xz plane.

@@ -24,7 +24,7 @@ void write(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
-std::vector<std::string> problems_of(const fs::path& manifest) {
+std::vector<std::string> manifest_problems(const fs::path& manifest) {
   try {
     load_batch_manifest(manifest);
   } catch (const InputError& error) {
@@ -57,7 +57,7 @@ TEST(BatchManifest, ReportsEveryProblemWithItsLineAndKey) {
         "[[scenario]]\n"
         "name = 'b'\n"
         "override = 3\n");                // line 11: not a table
-  const auto lines = problems_of(manifest);
+  const auto lines = manifest_problems(manifest);
   const std::string file = manifest.string();
   EXPECT_TRUE(mentions(lines, file + ":1: key 'seeds': seed 1 is given twice")) << ::testing::PrintToString(lines);
   EXPECT_TRUE(mentions(lines, file + ":1: key 'seeds': expected integers >= 0"));
@@ -71,7 +71,7 @@ TEST(BatchManifest, ReportsEveryProblemWithItsLineAndKey) {
 TEST(BatchManifest, NotTomlIsRefusedWithItsLine) {
   TempFolder folder("batch-manifest");
   write(folder.path() / "batch.toml", "seeds = [1]\n[[stand]\n");
-  const auto lines = problems_of(folder.path() / "batch.toml");
+  const auto lines = manifest_problems(folder.path() / "batch.toml");
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_NE(lines[0].find("batch.toml:2: not valid TOML"), std::string::npos) << lines[0];
 }

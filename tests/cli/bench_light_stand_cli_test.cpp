@@ -15,8 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The eight trees of stands/tiny at age 20 with a coarse 8 x 16 sky (validation/bench/stands/tiny.toml).
-const fs::path tiny = source_path("validation/bench/stands/tiny.toml");
+using testing::tiny_bench_stand;
 
 struct Bench {
   CliResult cli;
@@ -66,14 +65,14 @@ const std::string parameters_only = " --device none --reference-exact-max 0 --re
 TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
   const bool opencl = compute::opencl_device_exists();
   const Bench bench = bench_light(scratch_folder("bench-light-stand"),
-                                  "--stand " + tiny.string() + " --device " + (opencl ? "opencl" : "none"));
+                                  "--stand " + tiny_bench_stand.string() + " --device " + (opencl ? "opencl" : "none"));
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const auto& stands = bench.json.at("stands");
   ASSERT_EQ(stands.size(), 1u) << "--stand alone runs no synthetic stand";
   const auto& row = stands.at(0);
-  EXPECT_EQ(row.at("stand"), tiny.string());
+  EXPECT_EQ(row.at("stand"), tiny_bench_stand.string());
   EXPECT_EQ(row.at("trees"), 8);
-  EXPECT_EQ(row.at("balls").get<std::size_t>(), established_leaf_balls(tiny));
+  EXPECT_EQ(row.at("balls").get<std::size_t>(), established_leaf_balls(tiny_bench_stand));
   EXPECT_EQ(row.at("plot_m"), 10.0);
   EXPECT_EQ(row.at("parameters").at("sky_bands"), 8) << "the scenario's [light]";
   EXPECT_EQ(row.at("parameters").at("sky"), "overcast") << "a stand's sky unless [light] says otherwise";

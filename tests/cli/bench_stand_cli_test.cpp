@@ -23,9 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The eight trees of stands/tiny, age 20, roots on, without its thinning (validation/bench/stands/tiny.toml); the
-// reference solver keeps it quick and device-free.
-const std::string tiny = source_path("validation/bench/stands/tiny.toml").string();
+// The bench's tiny stand; the reference solver keeps it quick and device-free.
+using testing::tiny_bench_stand;
 
 struct Bench {
   CliResult cli;
@@ -37,7 +36,8 @@ Bench bench_tiny(const fs::path& folder, const std::string& extra = "", const st
   fs::create_directories(folder);
   const fs::path json = folder / "bench.json";
   Bench bench;
-  bench.cli = run_cli("bench stand " + tiny + " --years 1 --device " + device + " -o " + json.string() + " " + extra + " -q");
+  bench.cli = run_cli("bench stand " + tiny_bench_stand.string() + " --years 1 --device " + device + " -o " + json.string() +
+                      " " + extra + " -q");
   if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
   return bench;
 }
@@ -102,7 +102,8 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
   const fs::path folder = scratch_folder("bench-stand-by-year");
   fs::create_directories(folder);
   const fs::path file = folder / "bench.json";
-  const CliResult cli = run_cli("bench stand " + tiny + " --years 2 --device reference -o " + file.string() + " -q");
+  const CliResult cli =
+      run_cli("bench stand " + tiny_bench_stand.string() + " --years 2 --device reference -o " + file.string() + " -q");
   ASSERT_EQ(cli.status, 0) << cli.output;
   const nlohmann::json json = nlohmann::json::parse(read_text(file));
   const auto& years = json.at("by_year");
@@ -200,7 +201,8 @@ TEST(BenchStandCli, CountsMatchTheGrownStand) {
   const Bench bench = bench_tiny(folder);
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const CliResult grown =
-      run_cli("grow " + tiny + " --years 1 --device reference --out " + (folder / "grown").string() + " -q");
+      run_cli("grow " + tiny_bench_stand.string() + " --years 1 --device reference --out " + (folder / "grown").string() +
+              " -q");
   ASSERT_EQ(grown.status, 0) << grown.output;
   vtkSmartPointer<vtkXMLMultiBlockDataReader> balls_reader, roots_reader;
   vtkPolyData* balls = block_of_year(folder / "grown", "leaf_balls", balls_reader);

@@ -37,6 +37,10 @@ inline std::filesystem::path source_path(const std::string& relative) {
   return std::filesystem::path(HELIOSTAND_SOURCE_DIR) / relative;
 }
 
+// The eight trees of stands/tiny at age 20 with roots and a coarse 8 x 16 sky, without the stand's thinning:
+// validation/bench/stands/tiny.toml, the bench tests' stand.
+inline const std::filesystem::path tiny_bench_stand = source_path("validation/bench/stands/tiny.toml");
+
 // A fresh, empty folder under the build tree for one test's output.
 inline std::filesystem::path scratch_folder(const std::string& name) {
   const auto path = std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / name;

@@ -27,12 +27,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // The tiny stand: 8 trees on 0.01 ha, age 20 → 25, tree "4" removed at age 23 (stands/tiny/README.md).
-const std::string tiny = source_path("stands/tiny/scenario.toml").string();
+const std::string tiny_scenario = source_path("stands/tiny/scenario.toml").string();
 
 // Each CTest process is one TEST, so a run shared by several checks lives inside one TEST: the tiny
 // stand is grown once with the reference solver and every output aspect is checked on that run.
 CliResult grow_tiny(const fs::path& folder, const std::string& extra) {
-  return run_cli("grow " + tiny + " --out " + folder.string() + " " + extra + " -q");
+  return run_cli("grow " + tiny_scenario + " --out " + folder.string() + " " + extra + " -q");
 }
 
 std::vector<std::map<std::string, std::string>> read_table(const fs::path& path) {
@@ -80,7 +80,7 @@ void check_every_output_written(const fs::path& folder) {
 void check_run_record(const fs::path& folder) {
   const auto record = nlohmann::json::parse(read_text(folder / "run.json"));
   EXPECT_NE(record.at("command_line").get<std::string>().find("grow"), std::string::npos);
-  EXPECT_EQ(fs::path(record.at("scenario").get<std::string>()), fs::absolute(tiny).lexically_normal());
+  EXPECT_EQ(fs::path(record.at("scenario").get<std::string>()), fs::absolute(tiny_scenario).lexically_normal());
   EXPECT_EQ(record.at("seed").get<std::uint64_t>(), 7u) << "stands/tiny's [run] seed";
   EXPECT_EQ(record.at("device"), "reference");
   EXPECT_EQ(record.at("first_stand_age"), 20);
@@ -256,7 +256,7 @@ TEST(GrowCli, NonEmptyOutputFolderIsRefusedWithoutForce) {
   const auto folder = scratch_folder("tiny_not_empty");
   fs::create_directories(folder);
   std::ofstream(folder / "notes.txt") << "mine\n";
-  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " --device reference");
+  const auto run = run_cli("grow " + tiny_scenario + " --out " + folder.string() + " --device reference");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("--force"), std::string::npos) << run.output;
   EXPECT_EQ(read_text(folder / "notes.txt"), "mine\n");
@@ -297,10 +297,10 @@ TEST(GrowCli, AnImpossibleSurveyHeightIsBadInputNotACrash) {
 
 TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
   const auto folder = scratch_folder("tiny_bad_device");
-  const auto malformed = run_cli("grow " + tiny + " --out " + folder.string() + " --device gpu");
+  const auto malformed = run_cli("grow " + tiny_scenario + " --out " + folder.string() + " --device gpu");
   EXPECT_EQ(malformed.status, 2) << malformed.output;
   EXPECT_NE(malformed.output.find("device 'gpu'"), std::string::npos) << malformed.output;
-  const auto missing = run_cli("grow " + tiny + " --out " + folder.string() + " --device opencl:99");
+  const auto missing = run_cli("grow " + tiny_scenario + " --out " + folder.string() + " --device opencl:99");
   EXPECT_NE(missing.status, 0) << missing.output;
   EXPECT_NE(missing.output.find("99"), std::string::npos) << missing.output;
   EXPECT_FALSE(fs::exists(folder)) << "no output for a device that does not exist";
@@ -310,7 +310,7 @@ TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
 static void expect_refused_before_output(const std::string& folder_name, const std::string& flags,
                                          const std::string& named) {
   const auto folder = scratch_folder(folder_name);
-  const auto run = run_cli("grow " + tiny + " --out " + folder.string() + " " + flags);
+  const auto run = run_cli("grow " + tiny_scenario + " --out " + folder.string() + " " + flags);
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find(named), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(folder));
@@ -323,7 +323,7 @@ static void expect_refused_before_output(const std::string& folder_name, const s
 TEST(GrowCli, ATableThatCannotBeWrittenStopsTheRunNamingItAndTheReason) {
   const auto folder = scratch_folder("tiny_full_disk");
   const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 4; exec " + std::string(HELIOSTAND_EXECUTABLE) +
-                               " -q grow " + tiny + " --device reference --no-vtk --out " + folder.string() + "\"");
+                               " -q grow " + tiny_scenario + " --device reference --no-vtk --out " + folder.string() + "\"");
   EXPECT_EQ(run.status, 2) << run.output;
   std::set<std::string> tables{"stand_table.csv", "trees.csv", "events.csv"};
   std::string failed;

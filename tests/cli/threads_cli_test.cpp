@@ -15,7 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path tiny_with_roots(const fs::path& folder) {
+fs::path tiny_with_roots_file(const fs::path& folder) {
   fs::create_directories(folder);
   const fs::path scenario = folder / "scenario.toml";
   std::ofstream(scenario) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string() << "\"\n"
@@ -39,7 +39,7 @@ std::map<std::string, std::string> files_of(const fs::path& run) {
 
 TEST(ThreadsCli, AnswersDoNotDependOnTheThreads) {
   const fs::path folder = scratch_folder("threads");
-  const fs::path scenario = tiny_with_roots(folder);
+  const fs::path scenario = tiny_with_roots_file(folder);
   for (const char* threads : {"1", "3"}) {
     const CliResult run = run_cli(std::string("--threads ") + threads + " grow " + scenario.string() + " --out " +
                                   (folder / threads).string() + " --device reference -q");

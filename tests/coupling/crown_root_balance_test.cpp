@@ -49,14 +49,14 @@ TEST(CrownRootBalance, BalanceAppliesRhoAndTauPerPath) {
   EXPECT_DOUBLE_EQ(b.branch[0], 0.0);           // empty path
 }
 
-ConiferTree grown_tree(int age) {
+ConiferTree grown_conifer(int age) {
   ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, {3.0, 4.0, 0.0}, 11, 0);
   tree.grow_to_age(age);
   return tree;
 }
 
 TEST(CrownRootBalance, EveryFirstOrderShootPointsIntoItsPath) {
-  const ConiferTree tree = grown_tree(12);
+  const ConiferTree tree = grown_conifer(12);
   int checked = 0;
   for (std::size_t i = 0; i < tree.shoots().size(); ++i) {
     const Shoot& shoot = tree.shoots()[i];
@@ -76,7 +76,7 @@ TEST(CrownRootBalance, EveryFirstOrderShootPointsIntoItsPath) {
 }
 
 TEST(CrownRootBalance, LateralsTakeThePathOfTheirFirstOrderBranch) {
-  const ConiferTree tree = grown_tree(12);
+  const ConiferTree tree = grown_conifer(12);
   int checked = 0;
   for (std::size_t i = 0; i < tree.shoots().size(); ++i) {
     const Shoot& shoot = tree.shoots()[i];
@@ -90,7 +90,7 @@ TEST(CrownRootBalance, LateralsTakeThePathOfTheirFirstOrderBranch) {
 }
 
 TEST(CrownRootBalance, LightByPathSumsAbsoluteLightAndSplitsTheLeader) {
-  const ConiferTree tree = grown_tree(10);
+  const ConiferTree tree = grown_conifer(10);
   const std::vector<int> shoots = tree.foliage_shoot_indices();
   std::vector<LightSample> light(shoots.size());
   double leader_light = 0.0;

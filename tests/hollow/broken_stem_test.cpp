@@ -5,11 +5,12 @@
 
 #include "hollow/broken_stem.hpp"
 #include "hollow/mesh_checks.hpp"
+#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {
 
-TrunkSurface test_trunk() { return TrunkSurface::seed001_taper(30.0, 15.0); }
+using testing::tall_trunk;
 
 void expect_clean(const HollowModel& model, const std::string& what) {
   const ManifoldReport m = check_manifold(model.mesh.vertices, model.mesh.triangles);
@@ -24,7 +25,7 @@ void expect_clean(const HollowModel& model, const std::string& what) {
 }
 
 TEST(BrokenStem, RollRunsAllAroundTheRimWithoutSelfIntersections) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   for (double tilt : {0.0, 0.15, 0.4}) {
     BrokenStemSpec spec;
     spec.break_height_m = 4.0;
@@ -46,7 +47,7 @@ TEST(BrokenStem, RollIsThickestWhereTheObliqueRimRunsSteepest) {
   spec.break_tilt_m = 0.4;  // rim height (tilt/2)·cos(x/ρ): level at the front and back, steepest at the sides
   spec.callus_radius_m = 0.02;
   spec.bulge_m = 0.03;
-  const HollowModel model = build_broken_stem(spec, test_trunk());
+  const HollowModel model = build_broken_stem(spec, tall_trunk());
   double level = 0, steep = 0;
   int nl = 0, ns = 0;
   for (const auto& ring : model.callus.rings) {
@@ -60,13 +61,13 @@ TEST(BrokenStem, RollIsThickestWhereTheObliqueRimRunsSteepest) {
 
 TEST(BrokenStem, BarkLinesRunStraightIntoTheRoll) {
   BrokenStemSpec spec;
-  const HollowModel model = build_broken_stem(spec, test_trunk());
+  const HollowModel model = build_broken_stem(spec, tall_trunk());
   for (std::size_t c = 0; c < model.bark.x.size(); ++c)
     for (double X : model.bark.X[c]) EXPECT_DOUBLE_EQ(X, model.bark.x[c]);
 }
 
 TEST(BrokenStem, InvalidBreaksAreRejectedWithTheFieldNamed) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   BrokenStemSpec spec;
   spec.break_height_m = 29.0;
   ASSERT_FALSE(validate(spec, trunk).empty());

@@ -12,11 +12,12 @@
 #include "hollow/placement.hpp"
 #include "hollow/wound_outline.hpp"
 #include "rng/random_stream.hpp"
+#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {
 
-TrunkSurface test_trunk() { return TrunkSurface::seed001_taper(20.0, 10.0); }
+using testing::short_trunk;
 
 TEST(CallusJitter, AnglesStayWithinFiveDegreesSumToZeroAndKeepTheirOrder) {
   RandomStream rng(3, {1});
@@ -57,7 +58,7 @@ std::pair<double, double> thickness_vertical_horizontal(const Callus& callus) {
 }
 
 TEST(Callus, VerticalRimStretchesSwellMoreThanHorizontalOnes) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = short_trunk();
   HollowSpec spec;  // W = 0.12, H = 0.20, r = 0.015, I = 0.01
   const auto [vertical, horizontal] = thickness_vertical_horizontal(callus_for(spec, trunk));
   // E_j ≈ I on vertical stretches and ≈ 0 on horizontal ones: 0.015 + 0.01 vs 0.015 (± 10 % jitter).
@@ -71,7 +72,7 @@ TEST(Callus, VerticalRimStretchesSwellMoreThanHorizontalOnes) {
 }
 
 TEST(Callus, CornerRadiiAreRTimesAJitterBetweenPointNineAndOnePointOne) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = short_trunk();
   HollowSpec spec;
   spec.bulge_m = 0.0;
   spec.width_m = 0.2;
@@ -87,7 +88,7 @@ TEST(Callus, CornerRadiiAreRTimesAJitterBetweenPointNineAndOnePointOne) {
 }
 
 TEST(Callus, CornersSitOnTheirPolygonPlaneAroundTheRim) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = short_trunk();
   const Callus callus = callus_for(HollowSpec{}, trunk);
   for (std::size_t j = 0; j < callus.rings.size(); j += 37) {
     const CallusRing& ring = callus.rings[j];
@@ -106,7 +107,7 @@ int band_crossings(Callus callus) { return separate_polygons(callus, 0); }
 
 TEST(Callus, ThickCallusOnASlenderWoundNoLongerCrossesItself) {
   // The seed's limit: on a narrow, tall wound a thick roll makes neighbouring polygons cross at the apexes.
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = short_trunk();
   HollowSpec spec;
   spec.width_m = 0.06;
   spec.wound_height_m = 0.40;

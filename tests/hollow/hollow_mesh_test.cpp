@@ -12,13 +12,14 @@
 #include "geometry/angles.hpp"
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/mesh_checks.hpp"
+#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {
 
 // A 30 m habitat tree (Todomatsu taper, seed 001 eq. 2, crown base at 15 m): radius 0.242 m at 1.5 m
 // (circumference 1.52 m).
-TrunkSurface test_trunk(double flare = 0.0) { return TrunkSurface::seed001_taper(30.0, 15.0, {flare, 0.3}); }
+using testing::tall_trunk;
 
 struct Case {
   double w, h, r, i;
@@ -87,7 +88,7 @@ void PrintTo(const Case& c, std::ostream* os) { *os << describe(c); }
 
 TEST_P(HollowSweep, MeshIsManifoldConsistentAndFreeOfSelfIntersections) {
   const Case c = GetParam();
-  const TrunkSurface trunk = test_trunk(c.flare);
+  const TrunkSurface trunk = tall_trunk(c.flare);
   const HollowSpec spec = spec_for(c);
   ASSERT_TRUE(validate(spec, trunk).empty()) << describe(c) << ": " << validate(spec, trunk)[0].reason;
   const HollowModel model = build_hollow(spec, trunk);
@@ -128,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(BeyondTheSeed, HollowSweep,
                          case_name);
 
 TEST(HollowMesh, WiderThanHalfTheStemOnlyWithCylindricalPlacement) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   const double circumference = 2.0 * pi * trunk.radius(1.5);
   HollowSpec spec = spec_for({0.85 * circumference, 0.3, 0.02, 0.05});
   ASSERT_TRUE(validate(spec, trunk).empty());
@@ -160,7 +161,7 @@ double deepest_cut(const HollowMesh& mesh, const TrunkSurface& trunk) {
 TEST(HollowMesh, BarkFacesFollowTheStemsConvexityWithinTheTolerance) {
   // Widely spaced bark lines (l = 8 cm on a 0.242 m radius stem) are the seed's worst case: flat faces between
   // lines cut into the stem by up to ρ(1 − cos(l/2ρ)) = 0.242 · (1 − cos 0.165) ≈ 3.3 mm.
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   HollowSpec spec = spec_for({0.3, 0.3, 0.03, 0.04});
   spec.bark_line_spacing_m = 0.08;
   spec.surface_tolerance_m = 0.0005;
@@ -196,8 +197,8 @@ FlankThickness flank_thickness(const HollowModel& model) {
 
 TEST(HollowMesh, RootCollarHollowHasAThickerCallusAtItsFoot) {
   const HollowSpec spec = spec_for({0.2, 0.3, 0.02, 0.02, Placement::cylindrical, 0.4});
-  const HollowModel flared = build_hollow(spec, test_trunk(0.6));
-  const HollowModel plain = build_hollow(spec, test_trunk(0.0));
+  const HollowModel flared = build_hollow(spec, tall_trunk(0.6));
+  const HollowModel plain = build_hollow(spec, tall_trunk(0.0));
   const FlankThickness f = flank_thickness(flared), p = flank_thickness(plain);
   // The flare 1 + 0.6 e^(−h/0.3) is about 1.22 on the lower flank (h ≈ 0.3 m) and 1.12 on the upper (h ≈ 0.5 m).
   EXPECT_GT(f.flare_low, 1.05 * f.flare_high);
@@ -210,7 +211,7 @@ TEST(HollowMesh, RootCollarHollowHasAThickerCallusAtItsFoot) {
 }
 
 TEST(HollowMesh, SameSeedSameMeshOtherSeedOtherJitter) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   HollowSpec spec;
   const HollowModel a = build_hollow(spec, trunk), b = build_hollow(spec, trunk);
   ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
@@ -221,7 +222,7 @@ TEST(HollowMesh, SameSeedSameMeshOtherSeedOtherJitter) {
 }
 
 TEST(HollowMesh, FacesPointOutOfTheWood) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   const HollowModel model = build_hollow(HollowSpec{}, trunk);
   int outward = 0, stem_faces = 0;
   for (const auto& t : model.mesh.triangles) {
@@ -235,7 +236,7 @@ TEST(HollowMesh, FacesPointOutOfTheWood) {
 }
 
 TEST(HollowMesh, InvalidSpecIsRejectedWithTheFieldNamed) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   HollowSpec spec;
   spec.callus_radius_m = -1;
   try {
@@ -255,12 +256,12 @@ TEST(HollowMesh, SlenderTangentPlaneWoundKeepsItsApexCleanForEverySeed) {
   spec.azimuth_deg = 0.0;
   for (std::uint64_t seed : {4, 6, 9, 11, 14, 16}) {
     spec.seed = seed;
-    expect_clean(build_hollow(spec, test_trunk()).mesh, fmt::format("W 4 cm, H 50 cm, tangent plane, seed {}", seed));
+    expect_clean(build_hollow(spec, tall_trunk()).mesh, fmt::format("W 4 cm, H 50 cm, tangent plane, seed {}", seed));
   }
 }
 
 TEST(TrunkMesh, PlainStemIsManifoldAndWithinToleranceOfTheTaper) {
-  const TrunkSurface trunk = test_trunk(0.5);
+  const TrunkSurface trunk = tall_trunk(0.5);
   const HollowMesh mesh = build_trunk_mesh(trunk, 0.0005);
   expect_clean(mesh, "plain stem");
   EXPECT_LT(deepest_cut(mesh, trunk), 0.0006);

@@ -3,21 +3,22 @@
 
 #include "hollow/hollow_spec.hpp"
 #include "hollow/trunk_surface.hpp"
+#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {
 
-TrunkSurface test_trunk() { return TrunkSurface::seed001_taper(20.0, 10.0); }
+using testing::short_trunk;
 
 // The single problem reported for a spec, as "field: reason".
 std::vector<std::string> problems_of(const HollowSpec& spec) {
   std::vector<std::string> out;
-  for (const auto& p : validate(spec, test_trunk())) out.push_back(p.field + ": " + p.reason);
+  for (const auto& p : validate(spec, short_trunk())) out.push_back(p.field + ": " + p.reason);
   return out;
 }
 
 void expect_field(const HollowSpec& spec, const std::string& field, const std::string& words) {
-  const auto problems = validate(spec, test_trunk());
+  const auto problems = validate(spec, short_trunk());
   ASSERT_FALSE(problems.empty()) << "expected a problem with " << field;
   bool found = false;
   for (const auto& p : problems) {
@@ -102,7 +103,7 @@ TEST(HollowSpec, MeshingParametersAreChecked) {
 TEST(HollowSpec, ProblemsFormatAsInputErrorLines) {
   HollowSpec s;
   s.bulge_m = 1.0;
-  auto problems = validate(s, test_trunk());
+  auto problems = validate(s, short_trunk());
   ASSERT_EQ(problems.size(), 1u);
   problems[0].file = "stands/trees.csv";
   problems[0].line = 4;

@@ -13,12 +13,13 @@
 #include "hollow/mesh_checks.hpp"
 #include "hollow/stem_mesh_builder.hpp"
 #include "rng/random_stream.hpp"
+#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {
 
-// The 30 m habitat tree of hollow_mesh_test.cpp (radius 0.242 m at 1.5 m).
-TrunkSurface test_trunk(double flare = 0.0) { return TrunkSurface::seed001_taper(30.0, 15.0, {flare, 0.3}); }
+// The 30 m habitat tree (radius 0.242 m at 1.5 m).
+using testing::tall_trunk;
 
 HollowSpec hollow_at(double height, double azimuth, double w = 0.12, double h = 0.20, std::uint64_t seed = 1) {
   HollowSpec s;
@@ -86,7 +87,7 @@ void expect_clean_stem(const std::vector<HollowSpec>& hollows, const TrunkSurfac
 }
 
 TEST(StackedHollows, NoHollowIsThePlainStemAndOneHollowIsBuildHollow) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   const HollowMesh none = build_stem_with_hollows({}, trunk), plain = build_trunk_mesh(trunk);
   EXPECT_EQ(none.vertices, plain.vertices);
   EXPECT_EQ(none.triangles, plain.triangles);
@@ -98,7 +99,7 @@ TEST(StackedHollows, NoHollowIsThePlainStemAndOneHollowIsBuildHollow) {
 
 TEST(StackedHollows, TwoHollowsOneAboveTheOtherMakeOneCleanMesh) {
   // Given in reverse height order: the builder sorts them.
-  expect_clean_stem({hollow_at(2.4, 200.0, 0.16, 0.30, 2), hollow_at(1.3, 30.0)}, test_trunk(), "two hollows");
+  expect_clean_stem({hollow_at(2.4, 200.0, 0.16, 0.30, 2), hollow_at(1.3, 30.0)}, tall_trunk(), "two hollows");
 }
 
 TEST(StackedHollows, ThreeHollowsIncludingAWideOneAndOneAtTheRootCollar) {
@@ -108,7 +109,7 @@ TEST(StackedHollows, ThreeHollowsIncludingAWideOneAndOneAtTheRootCollar) {
   HollowSpec wide = hollow_at(1.6, 90.0, 0.95, 0.30, 4);
   wide.callus_radius_m = 0.02;
   wide.bulge_m = 0.04;
-  expect_clean_stem({collar, wide, hollow_at(6.0, 300.0)}, test_trunk(0.6), "collar, wide and high hollows");
+  expect_clean_stem({collar, wide, hollow_at(6.0, 300.0)}, tall_trunk(0.6), "collar, wide and high hollows");
 }
 
 TEST(StackedHollows, SubdividedRingsAreJoinedToo) {
@@ -117,13 +118,13 @@ TEST(StackedHollows, SubdividedRingsAreJoinedToo) {
   HollowSpec low = hollow_at(1.3, 0.0, 0.3, 0.3), high = hollow_at(2.2, 120.0, 0.3, 0.3, 5);
   low.callus_radius_m = high.callus_radius_m = 0.03;
   low.bark_line_spacing_m = high.bark_line_spacing_m = 0.08;
-  expect_clean_stem({low, high}, test_trunk(), "wide bark line spacing");
+  expect_clean_stem({low, high}, tall_trunk(), "wide bark line spacing");
 }
 
 TEST(StackedHollows, TwoHollowsCloseTogetherAreJoinedAcrossANarrowGap) {
   // Default hollows (H = 0.2 m, r = 0.015 m) have patches ±0.2 m around their centres (max(H, 1.5 (H/2 + r)));
   // 0.42 m apart leaves exactly the 2 cm gap.
-  expect_clean_stem({hollow_at(1.3, 0.0), hollow_at(1.7201, 180.0, 0.12, 0.20, 9)}, test_trunk(), "2 cm gap");
+  expect_clean_stem({hollow_at(1.3, 0.0), hollow_at(1.7201, 180.0, 0.12, 0.20, 9)}, tall_trunk(), "2 cm gap");
 }
 
 // Pairs as close as validate_hollows allows, for sizes at the seed's extremes, both placements and a flaring
@@ -139,7 +140,7 @@ class HollowsAtTheirClosest : public ::testing::TestWithParam<Pair> {};
 
 TEST_P(HollowsAtTheirClosest, StillMakeOneCleanMesh) {
   const Pair p = GetParam();
-  const TrunkSurface trunk = test_trunk(p.flare);
+  const TrunkSurface trunk = tall_trunk(p.flare);
   HollowSpec low = hollow_at(p.height, 0.0, p.w, p.h, 11);
   low.callus_radius_m = p.r;
   low.bulge_m = p.i;
@@ -192,7 +193,7 @@ TEST(StackedHollows, RandomStacksThatValidateBuildClean) {
 }
 
 TEST(StackedHollows, OverlappingHollowsAreRejectedWithTheGapTheyNeed) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   // Hand-computed: patch half-height max(0.2, 1.5 · (0.1 + 0.015)) = 0.2 m each, plus the 2 cm gap.
   EXPECT_TRUE(validate_hollows({hollow_at(1.3, 0.0), hollow_at(1.721, 0.0)}, trunk).empty());
   const auto close = validate_hollows({hollow_at(1.3, 0.0), hollow_at(1.7, 0.0)}, trunk);
@@ -215,7 +216,7 @@ TEST(StackedHollows, OverlappingHollowsAreRejectedWithTheGapTheyNeed) {
 }
 
 TEST(StackedHollows, EachHollowsOwnProblemsNameItsIndex) {
-  const TrunkSurface trunk = test_trunk();
+  const TrunkSurface trunk = tall_trunk();
   HollowSpec bad = hollow_at(3.0, 0.0);
   bad.width_m = 0.01;
   const auto problems = validate_hollows({hollow_at(1.3, 0.0), bad}, trunk);

@@ -48,7 +48,7 @@ std::vector<std::string> block_names(const fs::path& vtm) {
 }
 
 // The cells of `block` that belong to tree `id`, as their own polydata with only the points they use.
-vtkSmartPointer<vtkPolyData> cells_of_tree(vtkPolyData& block, int id) {
+vtkSmartPointer<vtkPolyData> tree_cells_of(vtkPolyData& block, int id) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   auto tree = vtkSmartPointer<vtkPolyData>::New();
@@ -97,7 +97,7 @@ TEST_F(LevelsOfDetail, EveryTreeHasAClosedEnvelopeAroundAllItsLeafBalls) {
   vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
   for (std::size_t i = 0; i < stand_.snapshot.trees.size(); ++i) {
     const TreeSnapshot& tree = stand_.snapshot.trees[i];
-    vtkSmartPointer<vtkPolyData> envelope = cells_of_tree(*block, tree.id);
+    vtkSmartPointer<vtkPolyData> envelope = tree_cells_of(*block, tree.id);
     ASSERT_GT(envelope->GetNumberOfCells(), 20) << "tree " << tree.id;
     auto open_edges = vtkSmartPointer<vtkFeatureEdges>::New();
     open_edges->SetInputData(envelope);
@@ -152,14 +152,14 @@ TEST_F(LevelsOfDetail, AnEnvelopeCornerHasTheLightOfTheBallItBounds) {
 TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {
   stand_.snapshot.trees[1].leaf_balls.clear();
   vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
-  EXPECT_EQ(cells_of_tree(*block, stand_.snapshot.trees[1].id)->GetNumberOfCells(), 0);
-  EXPECT_GT(cells_of_tree(*block, stand_.snapshot.trees[0].id)->GetNumberOfCells(), 0);
+  EXPECT_EQ(tree_cells_of(*block, stand_.snapshot.trees[1].id)->GetNumberOfCells(), 0);
+  EXPECT_GT(tree_cells_of(*block, stand_.snapshot.trees[0].id)->GetNumberOfCells(), 0);
 }
 
 TEST_F(LevelsOfDetail, EachConeSpansItsTreesCrown) {
   vtkSmartPointer<vtkPolyData> block = build_crown_cone_block(stand_.snapshot);
   for (const TreeSnapshot& tree : stand_.snapshot.trees) {
-    vtkSmartPointer<vtkPolyData> cone = cells_of_tree(*block, tree.id);
+    vtkSmartPointer<vtkPolyData> cone = tree_cells_of(*block, tree.id);
     EXPECT_EQ(cone->GetNumberOfCells(), 9) << "eight sides and a base";
     double bounds[6];
     cone->GetBounds(bounds);

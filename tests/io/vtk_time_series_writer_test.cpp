@@ -25,17 +25,13 @@
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
 #include "read_text.hpp"
+#include "io/read_multiblock.hpp"
 
 namespace heliostand {
 namespace {
 namespace fs = std::filesystem;
 
-vtkSmartPointer<vtkMultiBlockDataSet> read_multiblock(const fs::path& vtm) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName(vtm.string().c_str());
-  reader->Update();
-  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
-}
+using testing::read_multiblock;
 
 vtkPolyData* block_named(vtkMultiBlockDataSet& multiblock, const std::string& name) {
   for (unsigned i = 0; i < multiblock.GetNumberOfBlocks(); ++i) {

@@ -29,6 +29,7 @@
 #include "light/reference_light_solver.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
+#include "io/read_multiblock.hpp"
 
 namespace heliostand {
 namespace {
@@ -37,12 +38,7 @@ namespace fs = std::filesystem;
 const char* const tree_arrays[] = {"tree_id", "status", "habitat_tree", "light", "species", "removal_age",
                                    "removal_reason"};
 
-vtkSmartPointer<vtkMultiBlockDataSet> read_multiblock(const fs::path& vtm) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName(vtm.string().c_str());
-  reader->Update();
-  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
-}
+using testing::read_multiblock;
 
 // name → block, for the non-empty blocks of a multiblock.
 std::map<std::string, vtkPolyData*> blocks_of(vtkMultiBlockDataSet& multiblock) {

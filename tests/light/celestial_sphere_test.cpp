@@ -1,16 +1,14 @@
 #include "light/celestial_sphere.hpp"
+#include "geometry/angles.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include <glm/geometric.hpp>
 
 namespace heliostand {
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 TEST(CelestialSphere, PatchesTileTheWholeSphereAndEachHemisphere) {
   LightParameters p;  // V = 16, H = 32

@@ -1,17 +1,15 @@
 #include "light/far_field.hpp"
+#include "geometry/angles.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
 namespace heliostand {
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 // The slab's clumping index (light/foliage_clumping.hpp): along each axis a cell's face holds exactly one disc
 // of r = 0.2 (fraction p of the face), so a pixel keeps t or 1 and the mean transmission is 1 - (1 - t) p,

@@ -7,16 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <numbers>
 #include <vector>
 
 #include "core/parallel_for.hpp"
 #include "rng/random_stream.hpp"
+#include "geometry/angles.hpp"
 
 namespace heliostand {
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 VoxelGrid three_cells_across() {
   VoxelGrid grid;

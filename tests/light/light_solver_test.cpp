@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <tuple>
 
@@ -20,11 +19,10 @@
 #include "light/occluders.hpp"
 #include "light/reference_light_solver.hpp"
 #include "light_test_stands.hpp"
+#include "geometry/angles.hpp"
 
 namespace heliostand {
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 enum class Backend { reference, opencl };
 enum class Mode { exact, culled };

@@ -7,18 +7,17 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/angles.hpp"
+#include "geometry/vector_checks.hpp"
 
 namespace heliostand::roots {
 namespace {
 
-void expect_near(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance = 1e-12) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+constexpr double exact = 1e-12;
+
+using testing::expect_near;
 
 double angle_between_deg(const glm::dvec3& a, const glm::dvec3& b) {
-  return degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0)));
+  return degrees(testing::angle_between(a, b));
 }
 
 TEST(RootDirection, InheritedDirectionTurnsWithinTheBranchingAngleRange) {
@@ -39,9 +38,9 @@ TEST(RootDirection, InheritedDirectionTurnsWithinTheBranchingAngleRange) {
 }
 
 TEST(RootDirection, DiagravitropicVectorIsTheDirectionLaidHorizontalInItsVerticalPlane) {
-  expect_near(horizontal_of({1.0, 0.0, -1.0}, {0.0, 1.0, 0.0}), {1.0, 0.0, 0.0});
-  expect_near(horizontal_of({3.0, 4.0, 10.0}, {0.0, 1.0, 0.0}), {0.6, 0.8, 0.0});
-  expect_near(horizontal_of({0.0, 0.0, -1.0}, {0.0, 2.0, 0.0}), {0.0, 1.0, 0.0});  // vertical: the fallback
+  expect_near(horizontal_of({1.0, 0.0, -1.0}, {0.0, 1.0, 0.0}), {1.0, 0.0, 0.0}, exact);
+  expect_near(horizontal_of({3.0, 4.0, 10.0}, {0.0, 1.0, 0.0}), {0.6, 0.8, 0.0}, exact);
+  expect_near(horizontal_of({0.0, 0.0, -1.0}, {0.0, 2.0, 0.0}), {0.0, 1.0, 0.0}, exact);  // vertical: the fallback
 }
 
 TEST(RootDirection, EachTermAloneGivesItsOwnDirection) {
@@ -50,31 +49,33 @@ TEST(RootDirection, EachTermAloneGivesItsOwnDirection) {
   vectors.diagravitropic = {1.0, 0.0, 0.0};
   vectors.moisture_pull = {0.0, 3.0, 0.0};
   vectors.contact_avoidance = {-2.0, 0.0, 0.0};
-  expect_near(compose_direction({.alpha = 1.0}, vectors), vectors.inherited);
-  expect_near(compose_direction({.alpha = 0.0, .beta = 1.0}, vectors), {0.0, 0.0, -1.0});
-  expect_near(compose_direction({.alpha = 0.0, .gamma = 1.0}, vectors), {1.0, 0.0, 0.0});
-  expect_near(compose_direction({.alpha = 0.0, .delta = 1.0}, vectors), {0.0, 1.0, 0.0});
-  expect_near(compose_direction({.alpha = 0.0, .epsilon = 1.0}, vectors), {-1.0, 0.0, 0.0});
+  expect_near(compose_direction({.alpha = 1.0}, vectors), vectors.inherited, exact);
+  expect_near(compose_direction({.alpha = 0.0, .beta = 1.0}, vectors), {0.0, 0.0, -1.0}, exact);
+  expect_near(compose_direction({.alpha = 0.0, .gamma = 1.0}, vectors), {1.0, 0.0, 0.0}, exact);
+  expect_near(compose_direction({.alpha = 0.0, .delta = 1.0}, vectors), {0.0, 1.0, 0.0}, exact);
+  expect_near(compose_direction({.alpha = 0.0, .epsilon = 1.0}, vectors), {-1.0, 0.0, 0.0}, exact);
 }
 
 TEST(RootDirection, WeightsMixUnitVectors) {
   TropismVectors vectors;
   vectors.inherited = {1.0, 0.0, 0.0};
   // Half inherited (east), half gravity: 45° below the horizontal, whatever the pull's magnitude.
-  expect_near(compose_direction({.alpha = 0.5, .beta = 0.5}, vectors), glm::normalize(glm::dvec3(1.0, 0.0, -1.0)));
+  expect_near(compose_direction({.alpha = 0.5, .beta = 0.5}, vectors),
+              glm::normalize(glm::dvec3(1.0, 0.0, -1.0)), exact);
   vectors.moisture_pull = {0.0, 100.0, 0.0};
-  expect_near(compose_direction({.alpha = 0.5, .delta = 0.5}, vectors), glm::normalize(glm::dvec3(1.0, 1.0, 0.0)));
+  expect_near(compose_direction({.alpha = 0.5, .delta = 0.5}, vectors),
+              glm::normalize(glm::dvec3(1.0, 1.0, 0.0)), exact);
 }
 
 TEST(RootDirection, AnEmptyOrBalancedFieldPullsNowhere) {
   TropismVectors vectors;
   vectors.inherited = {0.0, 1.0, 0.0};
   vectors.moisture_pull = {1e-7, 0.0, 0.0};  // float round-off of a balanced field
-  expect_near(compose_direction({.alpha = 0.4, .delta = 0.6}, vectors), {0.0, 1.0, 0.0});
-  expect_near(unit_or_zero({0.0, 0.0, 0.0}), {0.0, 0.0, 0.0});
+  expect_near(compose_direction({.alpha = 0.4, .delta = 0.6}, vectors), {0.0, 1.0, 0.0}, exact);
+  expect_near(unit_or_zero({0.0, 0.0, 0.0}), {0.0, 0.0, 0.0}, exact);
   // Opposite terms that cancel exactly keep the inherited direction.
   vectors.inherited = {0.0, 0.0, 1.0};
-  expect_near(compose_direction({.alpha = 0.5, .beta = 0.5}, vectors), {0.0, 0.0, 1.0});
+  expect_near(compose_direction({.alpha = 0.5, .beta = 0.5}, vectors), {0.0, 0.0, 1.0}, exact);
 }
 
 TEST(RootDirection, SettingOneWeightRescalesTheOthersToSumOne) {

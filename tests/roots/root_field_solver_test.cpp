@@ -11,6 +11,7 @@
 
 #include "compute/opencl_test_backend.hpp"
 #include "roots/make_root_field_solver.hpp"
+#include "geometry/vector_checks.hpp"
 
 namespace heliostand::roots {
 namespace {
@@ -21,7 +22,7 @@ struct Backend {
 };
 void PrintTo(const Backend& backend, std::ostream* out) { *out << backend.label; }
 
-class RootFieldSolverContract : public testing::TestWithParam<Backend> {
+class RootFieldSolverContract : public ::testing::TestWithParam<Backend> {
  protected:
   // Skipped only where there is no OpenCL device: a kernel that fails to build fails the test.
   void SetUp() override {
@@ -45,9 +46,7 @@ class RootFieldSolverContract : public testing::TestWithParam<Backend> {
 constexpr double tolerance = 1e-5;
 
 void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
+  testing::expect_near(actual, expected, tolerance);
 }
 
 RootTipQuery apex_at(glm::dvec3 position, double radius = 0.3) {
@@ -161,8 +160,8 @@ TEST_P(RootFieldSolverContract, ManyTipsInOrderAndAnEmptyStand) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, RootFieldSolverContract,
-                         testing::Values(Backend{"Reference", false}, Backend{"OpenCL", true}),
-                         [](const testing::TestParamInfo<Backend>& info) { return info.param.label; });
+                         ::testing::Values(Backend{"Reference", false}, Backend{"OpenCL", true}),
+                         [](const ::testing::TestParamInfo<Backend>& info) { return info.param.label; });
 
 }  // namespace
 }  // namespace heliostand::roots

@@ -9,7 +9,7 @@
 namespace heliostand::roots {
 namespace {
 
-SoilGrid small_grid() { return SoilGrid({{0.0, 0.0, -1.0}, 1.0, {1, 1, 1}}, 1.0, 0.5); }  // 2 × 2 × 2 vertices
+SoilGrid one_cell_grid() { return SoilGrid({{0.0, 0.0, -1.0}, 1.0, {1, 1, 1}}, 1.0, 0.5); }  // 2 × 2 × 2 vertices
 
 std::vector<InputProblem> problems_of(const std::string& text, SoilGrid& soil) {
   std::istringstream in(text);
@@ -22,7 +22,7 @@ std::vector<InputProblem> problems_of(const std::string& text, SoilGrid& soil) {
 }
 
 TEST(SoilFile, SetsListedVerticesAndTheirCapacity) {
-  SoilGrid soil = small_grid();
+  SoilGrid soil = one_cell_grid();
   std::istringstream in("# wet corner\n\ni,j,k,moisture,nutrient\n0,0,0,0.25,0.75\n1, 1, 1, 0.5 ,1.0\n");
   read_soil_csv(in, "soil.csv", soil);
   EXPECT_DOUBLE_EQ(soil.at(SoilField::moisture, 0, 0, 0), 0.25);
@@ -33,7 +33,7 @@ TEST(SoilFile, SetsListedVerticesAndTheirCapacity) {
 }
 
 TEST(SoilFile, ColumnsInAnyOrderAndOnlyOneField) {
-  SoilGrid soil = small_grid();
+  SoilGrid soil = one_cell_grid();
   std::istringstream in("nutrient,k,j,i\n0.1,1,0,1\n");
   read_soil_csv(in, "soil.csv", soil);
   EXPECT_DOUBLE_EQ(soil.at(SoilField::nutrient, 1, 0, 1), 0.1);
@@ -41,7 +41,7 @@ TEST(SoilFile, ColumnsInAnyOrderAndOnlyOneField) {
 }
 
 TEST(SoilFile, EveryBadValueIsReportedWithLineAndColumn) {
-  SoilGrid soil = small_grid();
+  SoilGrid soil = one_cell_grid();
   const auto problems = problems_of(
       "i,j,k,moisture\n"
       "0,0,0,wet\n"   // line 2
@@ -64,7 +64,7 @@ TEST(SoilFile, EveryBadValueIsReportedWithLineAndColumn) {
 }
 
 TEST(SoilFile, BadHeaderAndMissingFile) {
-  SoilGrid soil = small_grid();
+  SoilGrid soil = one_cell_grid();
   auto header_problems = problems_of("i,j,depth,moisture\n", soil);
   ASSERT_EQ(header_problems.size(), 2u);
   EXPECT_EQ(header_problems[0].field, "depth");

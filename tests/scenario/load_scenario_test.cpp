@@ -12,7 +12,7 @@ namespace {
 using testing::minimal_stand;
 using testing::write_scenario;
 
-const std::filesystem::path stands = std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands";
+using testing::stands;
 
 TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   const auto file = write_scenario("minimal", minimal_stand);

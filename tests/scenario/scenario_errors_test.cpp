@@ -14,7 +14,7 @@ using testing::minimal_stand;
 using testing::write_scenario;
 using ::testing::ElementsAre;
 
-const std::filesystem::path stands = std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands";
+using testing::stands;
 
 using testing::scenario_problems;
 

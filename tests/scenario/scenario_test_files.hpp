@@ -8,6 +8,9 @@
 
 namespace heliostand::testing {
 
+// The repository's stands/ folder: the example stands and the deliberately bad files of stands/bad.
+inline const std::filesystem::path stands = std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands";
+
 // Four trees on a 10 m x 10 m plot (0.01 ha = 400 stems/ha), ids 1-4.
 inline const std::string four_tree_survey =
     "id,x,y,height,dbh,crown_radius,crown_base\n"

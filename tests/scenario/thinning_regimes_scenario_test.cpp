@@ -15,7 +15,7 @@ using testing::write_scenario;
 using ::testing::ElementsAre;
 using Measure = StandCondition::Measure;
 
-const std::filesystem::path stands = std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands";
+using testing::stands;
 
 TEST(ThinningRegimesScenario, EveryRegimeAndTriggerIsRead) {
   const auto file = write_scenario("regimes", minimal_stand +

@@ -20,7 +20,7 @@ std::vector<ThinningCandidate> stand() {
           {"D", 20, false, 0, 5, 7},  {"E", 25, false, 0, 3, 5},   {"F", 15, false, 0, 15, 13},
           {"G", 30, false, 0, 5, 9.5}};
 }
-const ThinningPlot plot{0.04, StandEdges{}};
+const ThinningPlot thinning_plot{0.04, StandEdges{}};
 
 ThinningRule crop_tree_rule(double per_ha, double spacing, double radius, std::optional<int> per_crop_tree) {
   ThinningRule rule;
@@ -31,27 +31,27 @@ ThinningRule crop_tree_rule(double per_ha, double spacing, double radius, std::o
 
 TEST(CropTreeThinning, CropTreesAreTheBiggestStemsAtLeastTheSpacingApart) {
   // 50/ha on 0.04 ha: two crop trees. B (38 cm) is second by DBH but only 2 m from A.
-  EXPECT_THAT(select_crop_trees(crop_tree_rule(50, 5, 4, {}).crop_trees, stand(), plot), ElementsAre(A, C));
+  EXPECT_THAT(select_crop_trees(crop_tree_rule(50, 5, 4, {}).crop_trees, stand(), thinning_plot), ElementsAre(A, C));
   // Without a spacing, B is taken.
-  EXPECT_THAT(select_crop_trees(crop_tree_rule(50, 0, 4, {}).crop_trees, stand(), plot), ElementsAre(A, B));
+  EXPECT_THAT(select_crop_trees(crop_tree_rule(50, 0, 4, {}).crop_trees, stand(), thinning_plot), ElementsAre(A, B));
   // Wanting four with 12 m spacing finds only two: A and C are the only stems 12 m apart.
-  EXPECT_THAT(select_crop_trees(crop_tree_rule(100, 12, 4, {}).crop_trees, stand(), plot), ElementsAre(A, C));
+  EXPECT_THAT(select_crop_trees(crop_tree_rule(100, 12, 4, {}).crop_trees, stand(), thinning_plot), ElementsAre(A, C));
 }
 
 TEST(CropTreeThinning, TheStrongestCompetitorsOfEachCropTreeLeave) {
   // Two per crop tree within 4 m: B and E for A (G is 4.5 m away), F for C.
-  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, 2), stand(), plot), ElementsAre(B, E, F));
+  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, 2), stand(), thinning_plot), ElementsAre(B, E, F));
   // All within the radius, strongest first.
-  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, {}), stand(), plot), ElementsAre(B, E, D, F));
+  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, {}), stand(), thinning_plot), ElementsAre(B, E, D, F));
   // A wider radius reaches G, never the other crop tree (C is 14.1 m from A).
-  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 20, {}), stand(), plot),
+  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 20, {}), stand(), thinning_plot),
               ElementsAre(B, E, D, G, F));
 }
 
 TEST(CropTreeThinning, ProtectedCompetitorsStayAndTheNextStrongestGoes) {
   auto trees = stand();
   trees[E].is_protected = true;
-  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, 2), trees, plot), ElementsAre(B, D, F));
+  EXPECT_THAT(select_crop_tree_competitors(crop_tree_rule(50, 5, 4, 2), trees, thinning_plot), ElementsAre(B, D, F));
 }
 
 TEST(CropTreeThinning, CompetitorsAcrossAPeriodicEdgeCount) {

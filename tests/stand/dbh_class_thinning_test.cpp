@@ -1,5 +1,6 @@
 // Thinning by DBH class: the trees of the class leave, all or an evenly spread fraction; protected ones stay.
 #include "stand/dbh_class_thinning.hpp"
+#include "stand/thinning_candidates.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,12 +10,7 @@ namespace {
 
 using ::testing::ElementsAre;
 
-// Ten trees of DBH 10, 12, ..., 28 cm, tree k has 10 + 2k cm.
-std::vector<ThinningCandidate> ten_trees() {
-  std::vector<ThinningCandidate> trees;
-  for (int i = 0; i < 10; ++i) trees.push_back({"t" + std::to_string(i), 10.0 + 2.0 * i, false});
-  return trees;
-}
+using testing::ten_trees;
 
 ThinningRule dbh_class(double min_cm, double max_cm) {
   ThinningRule rule;

@@ -21,7 +21,7 @@
 namespace heliostand {
 namespace {
 
-constexpr std::uint64_t seed = 7;
+constexpr std::uint64_t growth_seed = 7;
 
 // Every tree of the tiny example stand (8 records with height, DBH, crown radius and crown base) starts with the
 // record's values within 2 %.
@@ -53,7 +53,7 @@ TEST(GrowthResponse, IsZeroBelowTheCompensationPointLinearThenSaturated) {
 TEST(GrowthResponse, ShadedShootsAndLeadersGrowLessThanLitOnes) {
   SpeciesParameters species;
   auto grown = [&](double relative_light) {
-    ConiferTree tree(species, TreeCalibration{}, {0, 0, 0}, seed, 0);
+    ConiferTree tree(species, TreeCalibration{}, {0, 0, 0}, growth_seed, 0);
     tree.grow_to_age(12);
     const double height = tree.height_m();
     std::vector<ConiferTree::FoliageLight> light(tree.leaf_balls().size(), {1.0, relative_light, {0, 0, 1}});
@@ -74,10 +74,10 @@ TEST(GrowthResponse, ShadedShootsAndLeadersGrowLessThanLitOnes) {
   EXPECT_LT(dark_branches, 0.3 * lit_branches);  // only this year's whorl flushes (from the leader)
 }
 
-LightParameters coarse_sky() { return testing::production_sky(8, 16); }
+LightParameters finer_sky() { return testing::production_sky(8, 16); }
 
 StandTree planted(int id, glm::dvec3 position, int age) {
-  ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, position, seed, id);
+  ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, position, growth_seed, id);
   tree.grow_to_age(age);
   tree.set_light_driven_crown(true);
   return StandTree{id, std::to_string(id), "todomatsu", std::move(tree)};
@@ -101,9 +101,9 @@ Block grow_block(bool released) {
   std::vector<ScheduledThinning> thinning;
   if (released) thinning.push_back({14, ThinningRule{ThinningMethod::ids, thinned, {}, {}}, "release", false});
   Stand stand(0.0064, 14, std::move(trees), std::move(thinning));
-  ReferenceLightSolver solver(coarse_sky());
+  ReferenceLightSolver solver(finer_sky());
   StageClock clock;
-  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 6, 1}, clock);
+  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {growth_seed, 1.0, 6, 1}, clock);
   std::vector<double> start;
   for (const StandTree& tree : stand.trees()) start.push_back(tree.conifer.dbh_cm());
   for (int year = 0; year <= 6; ++year) simulated_year.run(year);
@@ -148,7 +148,7 @@ TEST(GrowthFromLight, ATreeAloneHasRelativeLightOne) {
   std::vector<StandTree> trees;
   trees.push_back(planted(0, {0, 0, 0}, 10));
   Stand stand(0.01, 10, std::move(trees), {});
-  ReferenceLightSolver solver(coarse_sky());
+  ReferenceLightSolver solver(finer_sky());
   stand.illuminate(solver, solver);
   EXPECT_NEAR(stand.trees()[0].light_budget.relative(), 1.0, 1e-9);
   EXPECT_GT(stand.trees()[0].light_budget.absorbed, 0.0);
@@ -163,7 +163,7 @@ TEST(GrowthFromLight, TheSnapshotCarriesEachBallsRelativeLight) {
   trees.push_back(planted(0, {0, 0, 0}, 10));
   trees.push_back(planted(1, {1.5, 0, 0}, 10));
   Stand stand(0.01, 10, std::move(trees), {});
-  ReferenceLightSolver solver(coarse_sky());
+  ReferenceLightSolver solver(finer_sky());
   stand.illuminate(solver, solver);
   const TreeSnapshot snapshot = snapshot_of(stand.trees()[0]);
   const auto& foliage = stand.trees()[0].conifer.foliage_light();
@@ -205,9 +205,9 @@ TEST(Mortality, BackgroundRateKillsAboutItsShare) {
   species.suppression_m1 = 0.0;
   int died = 0;
   for (int id = 0; id < 400; ++id) {
-    ConiferTree tree(species, TreeCalibration{}, {0, 0, 0}, seed, id);
+    ConiferTree tree(species, TreeCalibration{}, {0, 0, 0}, growth_seed, id);
     tree.grow_to_age(3);
-    if (auto cause = draw_mortality(tree, seed)) {
+    if (auto cause = draw_mortality(tree, growth_seed)) {
       EXPECT_EQ(*cause, DeathCause::background);
       ++died;
     }

@@ -14,14 +14,14 @@
 namespace heliostand {
 namespace {
 
-constexpr std::uint64_t seed = 5;
+constexpr std::uint64_t response_seed = 5;
 
-LightParameters coarse_sky() { return testing::production_sky(4, 8); }
+using testing::coarse_sky;
 
 StandTree planted(int id, glm::dvec3 position, double site_asymptote_m, int age) {
   TreeCalibration calibration;
   calibration.site_asymptote_m = site_asymptote_m;
-  ConiferTree tree(SpeciesParameters{}, calibration, position, seed, id);
+  ConiferTree tree(SpeciesParameters{}, calibration, position, response_seed, id);
   tree.grow_to_age(age);
   return StandTree{id, std::to_string(id), "todomatsu", std::move(tree)};
 }
@@ -31,7 +31,7 @@ StandTree planted(int id, glm::dvec3 position, double site_asymptote_m, int age)
 std::vector<TreeEvent> grow_with_light(Stand& stand, int years) {
   ReferenceLightSolver solver(coarse_sky());
   StageClock clock;
-  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, years, 1}, clock);
+  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {response_seed, 1.0, years, 1}, clock);
   std::vector<TreeEvent> deaths;
   for (int year = 0; year <= years; ++year) {
     const auto result = simulated_year.run(year);

@@ -9,6 +9,7 @@
 
 #include "light/reference_light_solver.hpp"
 #include "stand/light_response.hpp"
+#include "geometry/vector_checks.hpp"
 
 namespace heliostand {
 namespace {
@@ -37,9 +38,7 @@ LightResponseOutcome respond_to_light(ConiferTree& tree, const std::vector<Light
   return heliostand::respond_to_light(tree, seed);
 }
 
-double angle_between(glm::dvec3 a, glm::dvec3 b) {
-  return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0));
-}
+using testing::angle_between;
 
 TEST(LightResponse, LitNewBranchShootsTurnTowardTheLightVectorByI) {
   ConiferTree tree = young_tree();

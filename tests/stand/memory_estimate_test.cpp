@@ -11,16 +11,16 @@ namespace {
 constexpr std::uint64_t mib = 1024ull * 1024ull;
 constexpr std::uint64_t gib = 1024ull * mib;
 
-Scenario tiny() { return load_scenario(std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/scenario.toml"); }
+Scenario tiny_scenario() { return load_scenario(std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/scenario.toml"); }
 
 TEST(MemoryEstimate, IsOneGibibytePlusAPerTreeFigure) {
-  const MemoryEstimate estimate = estimate_run_memory(tiny());
+  const MemoryEstimate estimate = estimate_run_memory(tiny_scenario());
   EXPECT_EQ(estimate.trees, 8u);
   EXPECT_EQ(estimate.bytes, gib + 8 * mib * 7 / 4);  // 1 GiB + 8 × 1.75 MiB
 }
 
 TEST(MemoryEstimate, AStandBeyondTheMachineIsRefusedWithTheEstimate) {
-  const Scenario scenario = tiny();
+  const Scenario scenario = tiny_scenario();
   const MemoryEstimate estimate = estimate_run_memory(scenario);
   EXPECT_NO_THROW(refuse_beyond_memory(scenario, estimate, 64 * gib));
   EXPECT_NO_THROW(refuse_beyond_memory(scenario, estimate, estimate.bytes));

@@ -13,4 +13,7 @@ inline LightParameters production_sky(int bands, int sectors) {
   return light;
 }
 
+// Four bands of eight sectors: enough for a few small trees to shade each other.
+inline LightParameters coarse_sky() { return production_sky(4, 8); }
+
 }  // namespace heliostand::testing

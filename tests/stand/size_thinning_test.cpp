@@ -16,7 +16,7 @@ using ::testing::ElementsAre;
 const std::vector<int> listed_rank{4, 9, 0, 7, 2, 5, 8, 1, 6, 3};
 double dbh_of(int rank) { return 10.0 + 2.0 * rank; }
 
-std::vector<ThinningCandidate> ten_trees() {
+std::vector<ThinningCandidate> ten_ranked_trees() {
   std::vector<ThinningCandidate> trees;
   for (int rank : listed_rank) trees.push_back({"r" + std::to_string(rank), dbh_of(rank), false});
   return trees;
@@ -46,15 +46,15 @@ TEST(NeutralThinning, TakesOneTreeFromTheMiddleOfEachEqualSliceOfTheDbhRanking) 
 TEST(NeutralThinning, ToAStemTargetKeepsTheDbhDistributionsShape) {
   auto neutral = rule(ThinningMethod::neutral);
   neutral.target_stems_per_ha = 50;  // 10 → 5 trees
-  const auto chosen = select_by_size(neutral, ten_trees(), 0.1);
+  const auto chosen = select_by_size(neutral, ten_ranked_trees(), 0.1);
   EXPECT_THAT(ranks_of(chosen), ElementsAre(1, 3, 5, 7, 9));
   // From below and from above take the ends of the distribution instead.
   auto low = rule(ThinningMethod::from_below);
   low.target_stems_per_ha = 50;
-  EXPECT_THAT(ranks_of(select_by_size(low, ten_trees(), 0.1)), ElementsAre(0, 1, 2, 3, 4));
+  EXPECT_THAT(ranks_of(select_by_size(low, ten_ranked_trees(), 0.1)), ElementsAre(0, 1, 2, 3, 4));
   auto high = rule(ThinningMethod::from_above);
   high.target_stems_per_ha = 50;
-  EXPECT_THAT(ranks_of(select_by_size(high, ten_trees(), 0.1)), ElementsAre(9, 8, 7, 6, 5));
+  EXPECT_THAT(ranks_of(select_by_size(high, ten_ranked_trees(), 0.1)), ElementsAre(9, 8, 7, 6, 5));
 }
 
 TEST(NeutralThinning, ToABasalAreaTargetTakesTheFewestEvenlySpreadTrees) {
@@ -62,13 +62,13 @@ TEST(NeutralThinning, ToABasalAreaTargetTakesTheFewestEvenlySpreadTrees) {
   // two (ranks 2 and 7, 14 and 24 cm: 0.0154 + 0.0452 = 0.0606 m²) are.
   auto neutral = rule(ThinningMethod::neutral);
   neutral.target_basal_area_m2_per_ha = 2.5;
-  EXPECT_THAT(ranks_of(select_by_size(neutral, ten_trees(), 0.1)), ElementsAre(2, 7));
+  EXPECT_THAT(ranks_of(select_by_size(neutral, ten_ranked_trees(), 0.1)), ElementsAre(2, 7));
   neutral.target_basal_area_m2_per_ha = 3.2;  // already below
-  EXPECT_TRUE(select_by_size(neutral, ten_trees(), 0.1).empty());
+  EXPECT_TRUE(select_by_size(neutral, ten_ranked_trees(), 0.1).empty());
 }
 
 TEST(NeutralThinning, ProtectedTreesAreLeftOutOfTheRanking) {
-  auto trees = ten_trees();
+  auto trees = ten_ranked_trees();
   for (auto& tree : trees)
     if (tree.label == "r3") tree.is_protected = true;
   auto neutral = rule(ThinningMethod::neutral);
@@ -79,11 +79,11 @@ TEST(NeutralThinning, ProtectedTreesAreLeftOutOfTheRanking) {
 TEST(RelativeTargets, RemoveFractionTakesRoundedShareOfTheLivingStems) {
   auto low = rule(ThinningMethod::from_below);
   low.remove_fraction = 0.3;
-  EXPECT_THAT(ranks_of(select_by_size(low, ten_trees(), 0.1)), ElementsAre(0, 1, 2));
+  EXPECT_THAT(ranks_of(select_by_size(low, ten_ranked_trees(), 0.1)), ElementsAre(0, 1, 2));
   low.remove_fraction = 0.25;  // 2.5 rounds to 3
-  EXPECT_EQ(select_by_size(low, ten_trees(), 0.1).size(), 3u);
+  EXPECT_EQ(select_by_size(low, ten_ranked_trees(), 0.1).size(), 3u);
   // Protected trees count toward the living stems but are never taken.
-  auto trees = ten_trees();
+  auto trees = ten_ranked_trees();
   for (auto& tree : trees) tree.is_protected = tree.label == "r0";
   low.remove_fraction = 0.3;
   EXPECT_THAT(ranks_of(select_by_size(low, trees, 0.1)), ElementsAre(1, 2, 3));
@@ -94,12 +94,12 @@ TEST(RelativeTargets, RemoveBasalAreaFractionLeavesAtMostTheRest) {
   // leaving 1.4954; two would leave 1.9478.
   auto high = rule(ThinningMethod::from_above);
   high.remove_basal_area_fraction = 0.5;
-  EXPECT_THAT(ranks_of(select_by_size(high, ten_trees(), 0.1)), ElementsAre(9, 8, 7));
+  EXPECT_THAT(ranks_of(select_by_size(high, ten_ranked_trees(), 0.1)), ElementsAre(9, 8, 7));
   // Neutral to the same fraction: 0.1547 m² must go. 1 to 4 evenly spread trees take at most 0.1225 m²
   // (ranks 1, 3, 6, 8: 12, 16, 22, 26 cm); five (12, 16, 20, 24, 28 cm) take 0.1696 m².
   auto neutral = rule(ThinningMethod::neutral);
   neutral.remove_basal_area_fraction = 0.5;
-  EXPECT_THAT(ranks_of(select_by_size(neutral, ten_trees(), 0.1)), ElementsAre(1, 3, 5, 7, 9));
+  EXPECT_THAT(ranks_of(select_by_size(neutral, ten_ranked_trees(), 0.1)), ElementsAre(1, 3, 5, 7, 9));
 }
 
 }  // namespace

@@ -17,10 +17,10 @@
 namespace heliostand {
 namespace {
 
-constexpr std::uint64_t seed = 3;
+constexpr std::uint64_t output_seed = 3;
 
 StandTree planted(int id, const char* species, glm::dvec3 position) {
-  ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, position, seed, id);
+  ConiferTree tree(SpeciesParameters{}, TreeCalibration{}, position, output_seed, id);
   tree.grow_to_age(8);
   return StandTree{id, std::to_string(id + 1), species, std::move(tree)};
 }
@@ -64,7 +64,7 @@ TEST(StandYearOutput, StandTableEveryYearTreesOnlyInOutputYears) {
   ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
   StandOutput output({tmp.path() / "run", false, 100.0, false});
-  StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
+  StandYear simulated_year(stand, solver, solver, nullptr, &output, {output_seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
   for (int year = 0; year <= 4; ++year) simulated_year.run(year);
   output.finish(RunManifest{});
 
@@ -95,7 +95,7 @@ TEST(StandYearOutput, AGoneTreeGivesBackItsCrownOnceWritten) {
   ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
   StandOutput output({tmp.path() / "run", false, 100.0, false});
-  StandYear simulated_year(stand, solver, solver, nullptr, &output, {seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
+  StandYear simulated_year(stand, solver, solver, nullptr, &output, {output_seed, 1.0, 4, 3}, clock);  // written at 0, 3, 4
   for (int year = 0; year <= 2; ++year) simulated_year.run(year);
   const ConiferTree& larch = stand.trees()[1].conifer;
   ASSERT_FALSE(stand.trees()[1].alive()) << "thinned at 22";
@@ -125,7 +125,7 @@ TEST(StandYearOutput, WithoutOutputsAGoneTreeGivesBackItsCrownAtOnce) {
   Stand stand = stand_thinning_the_larch_at_22();
   ReferenceLightSolver solver = coarse_sky_solver();
   StageClock clock;
-  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {seed, 1.0, 4, 3}, clock);
+  StandYear simulated_year(stand, solver, solver, nullptr, nullptr, {output_seed, 1.0, 4, 3}, clock);
   for (int year = 0; year <= 1; ++year) simulated_year.run(year);
   EXPECT_FALSE(stand.trees()[1].conifer.crown_released());
   simulated_year.run(2);

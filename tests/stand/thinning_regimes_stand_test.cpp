@@ -22,12 +22,12 @@
 namespace heliostand {
 namespace {
 
-constexpr std::uint64_t seed = 3;
+constexpr std::uint64_t regime_seed = 3;
 
-StandTree planted(int id, glm::dvec3 position, double site_asymptote_m, int age) {
+StandTree planted_light_driven(int id, glm::dvec3 position, double site_asymptote_m, int age) {
   TreeCalibration calibration;
   calibration.site_asymptote_m = site_asymptote_m;
-  ConiferTree tree(SpeciesParameters{}, calibration, position, seed, id);
+  ConiferTree tree(SpeciesParameters{}, calibration, position, regime_seed, id);
   tree.grow_to_age(age);
   tree.set_light_driven_crown(true);
   return StandTree{id, "t" + std::to_string(id), "todomatsu", std::move(tree)};
@@ -42,7 +42,7 @@ std::vector<StandTree> six_rows() {
   for (int r = 0; r < rows; ++r)
     for (int k = 0; k < per_row; ++k) {
       const int id = per_row * r + k;
-      trees.push_back(planted(id, {0.75 + 1.5 * k, 1.5 + 3.0 * r, 0.0}, 18.0 + 0.5 * ((id * 7) % 24), 12));
+      trees.push_back(planted_light_driven(id, {0.75 + 1.5 * k, 1.5 + 3.0 * r, 0.0}, 18.0 + 0.5 * ((id * 7) % 24), 12));
     }
   return trees;
 }
@@ -215,15 +215,15 @@ TEST(ThinningRegimesInAStand, SnapshotsCarryTheHegyiIndexOfTheLivingTrees) {
   }
 }
 
-LightParameters coarse_sky() { return testing::production_sky(4, 8); }
+using testing::coarse_sky;
 
 // Steps 1 to 5 of the simulated year (stand/stand_year.hpp, no roots): the stand as the thinning step finds it.
 void grow_until_thinning(Stand& stand, LightSolver& solver, int year) {
   if (year > 0) stand.grow_year();
   stand.illuminate(solver, solver);
   if (year == 0) return;
-  stand.respond_to_light(seed);
-  stand.apply_mortality(seed);
+  stand.respond_to_light(regime_seed);
+  stand.apply_mortality(regime_seed);
 }
 
 // A stand grown in its own light: a thinning from below fires in the first year the basal area exceeds its

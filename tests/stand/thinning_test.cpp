@@ -1,4 +1,5 @@
 #include "stand/thinning.hpp"
+#include "stand/thinning_candidates.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,12 +8,8 @@
 namespace heliostand {
 namespace {
 
-// Ten trees of DBH 10, 12, ..., 28 cm on a 0.1 ha plot: 100 stems/ha.
-std::vector<ThinningCandidate> ten_trees() {
-  std::vector<ThinningCandidate> trees;
-  for (int i = 0; i < 10; ++i) trees.push_back({"t" + std::to_string(i), 10.0 + 2.0 * i, false});
-  return trees;
-}
+// Ten trees of DBH 10, 12, ..., 28 cm; on a 0.1 ha plot, 100 stems/ha.
+using testing::ten_trees;
 
 }  // namespace
 

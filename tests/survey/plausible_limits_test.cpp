@@ -15,10 +15,8 @@ using testing::write_test_file;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-std::vector<std::string> problems_of(const std::string& text) {
-  SurveyReadOptions options;
-  options.stand_age_years = 35;
-  return testing::survey_problems("limits.csv", text, options);
+std::vector<std::string> limit_problems(const std::string& text) {
+  return testing::survey_problems("limits.csv", text, testing::stand_of_age());
 }
 
 TEST(PlausibleLimits, EachColumnsLimitIsAnErrorJustAboveIt) {
@@ -32,7 +30,7 @@ TEST(PlausibleLimits, EachColumnsLimitIsAnErrorJustAboveIt) {
       {"height", "1,1,130.01,20", "130 m"},      {"dbh", "1,1,15,1500.1", "1500 cm"},
   };
   for (const Case& c : cases) {
-    const auto lines = problems_of("x,y,height,dbh\n" + c.row + "\n");
+    const auto lines = limit_problems("x,y,height,dbh\n" + c.row + "\n");
     ASSERT_EQ(lines.size(), 1u) << c.column;
     EXPECT_THAT(lines[0], HasSubstr("s.csv:2: column '" + c.column + "'")) << c.column;
     EXPECT_THAT(lines[0], HasSubstr("beyond the plausible limit of " + c.limit)) << c.column;
@@ -41,7 +39,7 @@ TEST(PlausibleLimits, EachColumnsLimitIsAnErrorJustAboveIt) {
       {"crown_radius", "30.5"}, {"crown_diameter", "61"}, {"crown_base", "131"}, {"age", "5001"},
       {"crown_ratio", "45"}};
   for (const auto& [column, value] : extra) {
-    const auto lines = problems_of("x,y,height,dbh," + column + "\n1,1,15,20," + value + "\n");
+    const auto lines = limit_problems("x,y,height,dbh," + column + "\n1,1,15,20," + value + "\n");
     ASSERT_FALSE(lines.empty()) << column;
     EXPECT_THAT(lines[0], HasSubstr("s.csv:2: column '" + column + "': " + value)) << column;
     EXPECT_THAT(lines[0], HasSubstr("beyond the plausible limit")) << column;
@@ -59,7 +57,7 @@ TEST(PlausibleLimits, ValuesAtTheLimitsPass) {
 }
 
 TEST(PlausibleLimits, TheCrashingHeightOfTheIssueIsRefused) {
-  EXPECT_THAT(problems_of("x,y,height\n1,1,1e308\n"),
+  EXPECT_THAT(limit_problems("x,y,height\n1,1,1e308\n"),
               ElementsAre("s.csv:2: column 'height': 1e+308 m is beyond the plausible limit of 130 m (the tallest "
                           "measured tree, a coast redwood, is 116 m)"));
 }
@@ -70,7 +68,7 @@ TEST(PlausibleLimits, TheLimitAppliesAfterUnitConversion) {
   options.stand_age_years = 35;
   const Survey survey = read_survey(write_test_file("limits_cm.csv", "x,y,height_cm\n1,1,13000\n"), options);
   EXPECT_DOUBLE_EQ(survey.trees[0].height_m, 130.0);
-  EXPECT_THAT(problems_of("x,y,height_ft\n1,1,1300\n"),
+  EXPECT_THAT(limit_problems("x,y,height_ft\n1,1,1300\n"),
               ElementsAre(HasSubstr("column 'height_ft': 396.24 m is beyond the plausible limit of 130 m")));
 }
 

@@ -12,12 +12,7 @@ using testing::input_problems;
 using testing::write_test_file;
 using ::testing::ElementsAre;
 
-SurveyReadOptions plot_30x30() {
-  SurveyReadOptions options;
-  options.plot = PlotBounds{0, 0, 30, 30};
-  options.stand_age_years = 35;
-  return options;
-}
+using testing::plot_30x30;
 
 std::vector<std::string> problems_of(const std::string& text, SurveyReadOptions options = plot_30x30()) {
   return testing::survey_problems("bad.csv", text, options);

@@ -13,12 +13,7 @@ using testing::input_problems;
 using testing::write_test_file;
 using ::testing::ElementsAre;
 
-SurveyReadOptions plot_30x30(double stand_age = 35) {
-  SurveyReadOptions options;
-  options.plot = PlotBounds{0, 0, 30, 30};
-  options.stand_age_years = stand_age;
-  return options;
-}
+using testing::plot_30x30;
 
 // ---------------------------------------------------------------------------------------------- good files
 

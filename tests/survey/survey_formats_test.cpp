@@ -17,17 +17,13 @@ using testing::write_test_file;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-SurveyReadOptions stand_of_age(double age = 35) {
-  SurveyReadOptions options;
-  options.stand_age_years = age;
-  return options;
-}
+using testing::stand_of_age;
 
 Survey read_text(const std::string& text, SurveyReadOptions options = stand_of_age()) {
   return read_survey(write_test_file("formats.csv", text), options);
 }
 
-std::vector<std::string> problems_of(const std::string& text, SurveyReadOptions options = stand_of_age()) {
+std::vector<std::string> format_problems(const std::string& text, SurveyReadOptions options = stand_of_age()) {
   return testing::survey_problems("formats_bad.csv", text, options);
 }
 
@@ -59,7 +55,7 @@ TEST(SurveySeparators, CommaSemicolonAndTabFilesReadTheSame) {
 
 TEST(SurveySeparators, DecimalCommaOnlyWhereTheCommaCannotSeparate) {
   // In a comma file "1,5" is two fields; in a semicolon file it is 1.5, but "1,234.5" stays an error.
-  EXPECT_THAT(problems_of("x;y;height\n1,234.5;2;15\n"),
+  EXPECT_THAT(format_problems("x;y;height\n1,234.5;2;15\n"),
               ElementsAre("s.csv:2: column 'x': expected a number, got \"1,234.5\""));
 }
 
@@ -70,7 +66,7 @@ TEST(SurveySeparators, TheScenarioMayNameTheSeparator) {
   const Survey survey = read_text("x,y,height,\"note;remark\"\n1,2,15,a\n", options);
   ASSERT_EQ(survey.trees.size(), 1u);
   EXPECT_DOUBLE_EQ(survey.trees[0].height_m, 15.0);
-  EXPECT_THAT(problems_of("x,y,height\n1,2,15\n", [] {
+  EXPECT_THAT(format_problems("x,y,height\n1,2,15\n", [] {
                 SurveyReadOptions o = stand_of_age();
                 o.format.separator = FieldSeparator::tab;
                 return o;
@@ -113,12 +109,12 @@ TEST(SurveyUnits, PositionsInFeetAndTheScenariosPerColumnUnit) {
 }
 
 TEST(SurveyUnits, UnitsThatDoNotFitOrDisagreeAreErrors) {
-  EXPECT_THAT(problems_of("x,y,height_pct\n1,2,15\n"),
+  EXPECT_THAT(format_problems("x,y,height_pct\n1,2,15\n"),
               ElementsAre("s.csv:1: column 'height_pct': 'pct' is not a unit of height (accepted: m, cm, mm, dm, ft, "
                           "in)"));
   SurveyReadOptions options = stand_of_age();
   options.format.units = {{SurveyColumn::dbh, "mm"}};
-  EXPECT_THAT(problems_of("x,y,dbh_cm\n1,2,20\n", options),
+  EXPECT_THAT(format_problems("x,y,dbh_cm\n1,2,20\n", options),
               ElementsAre("s.csv:1: column 'dbh_cm': the header says the unit is 'cm' but the scenario's survey_units "
                           "says 'mm'"));
 }
@@ -151,7 +147,7 @@ TEST(SurveyAliases, SortieTabTreeMapSkipsSeedlingsAndSnags) {
   EXPECT_EQ(survey.trees[0].species, "Beech");
   EXPECT_DOUBLE_EQ(survey.trees[1].dbh_cm, 15.887);
   EXPECT_TRUE(any_warning_contains(survey, "1 seedlings and 1 snags or other dead stems skipped"));
-  EXPECT_THAT(problems_of("X\tY\tType\tDiam\n1\t2\tTeenager\t10\n"),
+  EXPECT_THAT(format_problems("X\tY\tType\tDiam\n1\t2\tTeenager\t10\n"),
               ElementsAre(HasSubstr("s.csv:2: column 'Type': unknown life stage \"teenager\"")));
 }
 
@@ -177,7 +173,7 @@ TEST(SurveyAliases, ForestGeoCensus) {
 }
 
 TEST(SurveyAliases, CrownBaseAndCrownRatioTogetherAreAnError) {
-  EXPECT_THAT(problems_of("x,y,h,crown_base,crown_ratio\n1,2,15,7,0.5\n"),
+  EXPECT_THAT(format_problems("x,y,h,crown_base,crown_ratio\n1,2,15,7,0.5\n"),
               ElementsAre("s.csv:1: column 'crown_ratio': give either a crown base ('crown_base') or a crown ratio "
                           "column, not both"));
 }
@@ -192,7 +188,7 @@ const std::string two_double_stems = "id,x,y,height,dbh,crown_radius,species\n"
                                      "E,9,9,14,18,2,ta\n";
 
 TEST(MultiStemmedTrees, RefusedByDefault) {
-  EXPECT_EQ(problems_of(two_double_stems).size(), 2u);
+  EXPECT_EQ(format_problems(two_double_stems).size(), 2u);
 }
 
 TEST(MultiStemmedTrees, KeptAsSeparateTrees) {
@@ -222,7 +218,7 @@ TEST(MultiStemmedTrees, MergedByBasalArea) {
 TEST(MultiStemmedTrees, StemsOfTwoSpeciesCannotBeMerged) {
   SurveyReadOptions options = stand_of_age();
   options.format.multi_stem = MultiStemPolicy::merge;
-  EXPECT_THAT(problems_of("x,y,h,species\n1,1,15,ta\n1,1,12,bi\n", options),
+  EXPECT_THAT(format_problems("x,y,h,species\n1,1,15,ta\n1,1,12,bi\n", options),
               ElementsAre("s.csv:2: column 'x,y': stems of one tree must be of one species: line 2 is \"ta\", line 3 "
                           "\"bi\""));
 }

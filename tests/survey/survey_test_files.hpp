@@ -48,6 +48,20 @@ std::vector<std::string> input_problems(Action&& action) {
   return {};
 }
 
+// A survey of a stand of the given age, with no plot bounds given.
+inline SurveyReadOptions stand_of_age(double age = 35) {
+  SurveyReadOptions options;
+  options.stand_age_years = age;
+  return options;
+}
+
+// A survey of a 30 m × 30 m plot with its corner at the origin.
+inline SurveyReadOptions plot_30x30(double stand_age = 35) {
+  SurveyReadOptions options = stand_of_age(stand_age);
+  options.plot = PlotBounds{0, 0, 30, 30};
+  return options;
+}
+
 // The problems of reading `text` as the survey file `name` with `options`, the temporary path shown as "s.csv".
 inline std::vector<std::string> survey_problems(const std::string& name, const std::string& text,
                                                 const SurveyReadOptions& options) {
