@@ -19,8 +19,8 @@
 #include "architecture/whorl.hpp"
 #include "geometry/angles.hpp"
 #include "geometry/compass_sector.hpp"
-#include "rng/random_stream.hpp"
 #include "geometry/vertical.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand {
 
@@ -28,7 +28,6 @@ namespace {
 
 // Random-stream tags: each (tree, year, organ kind, axis) draws from its own stream.
 enum Organ : std::uint64_t { kWhorl = 1, kLateralPair = 2 };
-
 
 // Unit vector at `angle` from the vertical, leaning towards `azimuth` (x east = 0, counter-clockwise).
 glm::dvec3 direction_from(double angle_from_vertical, double azimuth) {

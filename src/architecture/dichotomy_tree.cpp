@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/angles.hpp"
-#include "rng/random_stream.hpp"
 #include "geometry/vertical.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand {
 

@@ -1,9 +1,10 @@
 #include "architecture/heliotropism.hpp"
-#include "geometry/vertical.hpp"
 
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "geometry/vertical.hpp"
 
 namespace heliostand {
 

@@ -15,13 +15,13 @@
 #include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
 #include "compute/opencl_context.hpp"
+#include "core/seconds_since.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
 #include "light/far_field_margin.hpp"
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
-#include "core/seconds_since.hpp"
 
 namespace heliostand {
 namespace {

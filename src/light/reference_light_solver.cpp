@@ -7,12 +7,12 @@
 #include <span>
 
 #include "core/parallel_for.hpp"
+#include "core/seconds_since.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
 #include "light/occluders.hpp"
-#include "core/seconds_since.hpp"
 
 namespace heliostand {
 namespace {

@@ -10,12 +10,12 @@
 #include "architecture/crown_metrics.hpp"
 #include "architecture/dichotomy_tree.hpp"
 #include "architecture/kanamaru_growth.hpp"
+#include "geometry/angles.hpp"
+#include "geometry/vector_checks.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/light_sum.hpp"
 #include "light/occluders.hpp"
 #include "rng/random_stream.hpp"
-#include "geometry/angles.hpp"
-#include "geometry/vector_checks.hpp"
 
 namespace heliostand {
 namespace {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 namespace heliostand::testing {
 

@@ -10,9 +10,9 @@
 #include "hollow/callus.hpp"
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/placement.hpp"
+#include "hollow/test_trunks.hpp"
 #include "hollow/wound_outline.hpp"
 #include "rng/random_stream.hpp"
-#include "hollow/test_trunks.hpp"
 
 namespace heliostand::hollow {
 namespace {

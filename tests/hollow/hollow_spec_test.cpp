@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "hollow/hollow_spec.hpp"
-#include "hollow/trunk_surface.hpp"
 #include "hollow/test_trunks.hpp"
+#include "hollow/trunk_surface.hpp"
 
 namespace heliostand::hollow {
 namespace {

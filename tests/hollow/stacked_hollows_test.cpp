@@ -12,8 +12,8 @@
 #include "hollow/hollow_mesh.hpp"
 #include "hollow/mesh_checks.hpp"
 #include "hollow/stem_mesh_builder.hpp"
-#include "rng/random_stream.hpp"
 #include "hollow/test_trunks.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand::hollow {
 namespace {

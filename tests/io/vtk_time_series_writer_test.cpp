@@ -22,10 +22,10 @@
 #include <vtkXMLMultiBlockDataReader.h>
 
 #include "io/file_size_limit.hpp"
+#include "io/read_multiblock.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
 #include "read_text.hpp"
-#include "io/read_multiblock.hpp"
 
 namespace heliostand {
 namespace {

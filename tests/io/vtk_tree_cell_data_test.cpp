@@ -21,6 +21,7 @@
 #include <vtkStringArray.h>
 #include <vtkXMLMultiBlockDataReader.h>
 
+#include "io/read_multiblock.hpp"
 #include "io/stand_output.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
@@ -29,7 +30,6 @@
 #include "light/reference_light_solver.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
-#include "io/read_multiblock.hpp"
 
 namespace heliostand {
 namespace {

@@ -1,11 +1,12 @@
 #include "light/celestial_sphere.hpp"
-#include "geometry/angles.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "geometry/angles.hpp"
 
 namespace heliostand {
 namespace {

@@ -1,5 +1,4 @@
 #include "light/far_field.hpp"
-#include "geometry/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +6,8 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "geometry/angles.hpp"
 
 namespace heliostand {
 namespace {

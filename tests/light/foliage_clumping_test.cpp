@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/parallel_for.hpp"
-#include "rng/random_stream.hpp"
 #include "geometry/angles.hpp"
+#include "rng/random_stream.hpp"
 
 namespace heliostand {
 namespace {

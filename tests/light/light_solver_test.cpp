@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "compute/opencl_test_backend.hpp"
+#include "geometry/angles.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
 #include "light/far_field_margin.hpp"
@@ -19,7 +20,6 @@
 #include "light/occluders.hpp"
 #include "light/reference_light_solver.hpp"
 #include "light_test_stands.hpp"
-#include "geometry/angles.hpp"
 
 namespace heliostand {
 namespace {

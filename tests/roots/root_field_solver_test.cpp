@@ -10,8 +10,8 @@
 #include <glm/geometric.hpp>
 
 #include "compute/opencl_test_backend.hpp"
-#include "roots/make_root_field_solver.hpp"
 #include "geometry/vector_checks.hpp"
+#include "roots/make_root_field_solver.hpp"
 
 namespace heliostand::roots {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/vector_checks.hpp"
 #include "light/reference_light_solver.hpp"
 #include "stand/light_response.hpp"
-#include "geometry/vector_checks.hpp"
 
 namespace heliostand {
 namespace {

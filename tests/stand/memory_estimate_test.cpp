@@ -11,7 +11,9 @@ namespace {
 constexpr std::uint64_t mib = 1024ull * 1024ull;
 constexpr std::uint64_t gib = 1024ull * mib;
 
-Scenario tiny_scenario() { return load_scenario(std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/scenario.toml"); }
+Scenario tiny_scenario() {
+  return load_scenario(std::filesystem::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/scenario.toml");
+}
 
 TEST(MemoryEstimate, IsOneGibibytePlusAPerTreeFigure) {
   const MemoryEstimate estimate = estimate_run_memory(tiny_scenario());

@@ -42,7 +42,8 @@ std::vector<StandTree> six_rows() {
   for (int r = 0; r < rows; ++r)
     for (int k = 0; k < per_row; ++k) {
       const int id = per_row * r + k;
-      trees.push_back(planted_light_driven(id, {0.75 + 1.5 * k, 1.5 + 3.0 * r, 0.0}, 18.0 + 0.5 * ((id * 7) % 24), 12));
+      trees.push_back(
+          planted_light_driven(id, {0.75 + 1.5 * k, 1.5 + 3.0 * r, 0.0}, 18.0 + 0.5 * ((id * 7) % 24), 12));
     }
   return trees;
 }
