@@ -11,6 +11,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/seconds_since.hpp"
+
 extern char** environ;
 
 namespace heliostand {
@@ -72,7 +74,7 @@ ProcessOutcome run_process(const fs::path& program, const std::vector<std::strin
   int raw = 0;
   while (::waitpid(child, &raw, 0) < 0 && errno == EINTR) {
   }
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = seconds_since(start);
   outcome.exit_status = WIFSIGNALED(raw) ? 128 + WTERMSIG(raw) : WEXITSTATUS(raw);
   outcome.error = failure_reason(outcome.exit_status, log_file);
   return outcome;

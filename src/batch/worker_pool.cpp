@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/seconds_since.hpp"
+
 namespace heliostand {
 
 std::string human_duration(double seconds) {
@@ -32,7 +34,7 @@ class Progress {
   void finished(const JobReport& report) {
     const std::lock_guard lock(mutex_);
     ++done_;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = seconds_since(start_);
     const std::size_t left = count_ - done_;
     // elapsed / done is the wall time per job at this pool's pace (all workers together).
     const double eta = elapsed / static_cast<double>(done_) * static_cast<double>(left);

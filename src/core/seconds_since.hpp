@@ -1,5 +1,6 @@
 #pragma once
-// Wall-clock seconds from `start` to now, on the steady clock the solvers time their parts with.
+// Wall-clock seconds from `start` to now, on the steady clock: the solvers' parts, the run's stages and wall time,
+// the progress line's and the batch's estimates.
 #include <chrono>
 
 namespace heliostand {

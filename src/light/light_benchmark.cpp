@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/seconds_since.hpp"
 #include "geometry/angles.hpp"
 #include "light/make_light_solver.hpp"
 #include "light/synthetic_canopy.hpp"
@@ -74,13 +75,13 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
   if (balls.size() <= max_balls) {
     const auto start = Clock::now();
     const auto all = solver.solve(balls);
-    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    run.seconds = seconds_since(start);
     for (auto k : subsample) run.at_subsample.push_back(all[k]);
   } else {
     run.estimated = true;
     const auto start = Clock::now();
     run.at_subsample = solver.solve_for(balls, subsample);
-    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    const double wall = seconds_since(start);
     const auto& stats = solver.last_statistics();
     // setup (tree, far field) is per stand; the per-ball part scales with the number of balls
     run.seconds = stats.setup_seconds + (wall - stats.setup_seconds) * double(balls.size()) / subsample.size();

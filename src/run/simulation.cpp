@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "compute/compute_backend.hpp"
+#include "core/seconds_since.hpp"
 #include "io/checkpoint_state.hpp"
 #include "io/root_vtk.hpp"
 #include "io/stand_output.hpp"
@@ -227,7 +228,7 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
     });
   const double earlier_wall_seconds = run_progress.wall_seconds;  // of the sessions before a resume
   auto wall_seconds = [&] {
-    return earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return earlier_wall_seconds + seconds_since(started);
   };
 
   ProgressLine progress(scenario.run.years, options.show_progress);

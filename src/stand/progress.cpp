@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/seconds_since.hpp"
+
 namespace heliostand {
 
 ProgressLine::ProgressLine(int total_years, bool enabled)
@@ -15,7 +17,7 @@ void ProgressLine::update(int years_done) {
   constexpr int width = 30;
   const double fraction = static_cast<double>(years_done) / total_;
   const int filled = static_cast<int>(fraction * width);
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = seconds_since(start_);
   const double remaining = years_done > 0 ? elapsed * (total_ - years_done) / years_done : 0.0;
   const int minutes = static_cast<int>(remaining) / 60, seconds = static_cast<int>(remaining) % 60;
   fmt::print(stderr, "\ryear {}/{} [{}{}] {:3.0f}%  ETA {}m {:02d}s ", years_done, total_,

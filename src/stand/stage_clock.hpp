@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/checkpoint_access.hpp"
+#include "core/seconds_since.hpp"
 
 namespace heliostand {
 
@@ -31,7 +32,7 @@ class StageClock {
       std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
       double cpu_start = process_cpu_seconds();
       ~Stop() {
-        add(clock.stages_, stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        add(clock.stages_, stage, seconds_since(start));
         add(clock.cpu_, stage, process_cpu_seconds() - cpu_start);
       }
     } stop{*this, stage};

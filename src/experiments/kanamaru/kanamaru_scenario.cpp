@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "architecture/crown_metrics.hpp"
+#include "core/seconds_since.hpp"
 #include "geometry/angles.hpp"
 #include "io/csv_writer.hpp"
 #include "io/dichotomy_tree_vtk.hpp"
@@ -147,7 +148,7 @@ KanamaruRunSummary run_kanamaru(const KanamaruScenario& s, const std::filesystem
   summary.generations = tree.generation();
   summary.tips = static_cast<int>(tree.tips().size());
   for (const auto& b : tree.branches()) summary.living_branches += b.alive;
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary.seconds = seconds_since(started);
   return summary;
 }
 
