@@ -11,7 +11,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 #include <map>
 
@@ -20,6 +19,7 @@
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
 #include "io/csv_test_reader.hpp"
+#include "io/read_multiblock.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -47,12 +47,9 @@ std::vector<std::map<std::string, std::string>> read_table(const fs::path& path)
 }
 
 vtkSmartPointer<vtkMultiBlockDataSet> read_year(const fs::path& folder, int stand_age) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
   char name[32];
   std::snprintf(name, sizeof name, "stand_age_%04d.vtm", stand_age);
-  reader->SetFileName((folder / "stand" / name).c_str());
-  reader->Update();
-  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  return testing::read_multiblock(folder / "stand" / name);
 }
 
 vtkPolyData* block(vtkMultiBlockDataSet* multiblock, const std::string& name) {

@@ -38,7 +38,7 @@ TEST(KernelCompiles, ThreeYearsOfTheTinyStandCompileEachKernelForOneGroupSize) {
   fs::create_directories(folder);
   const fs::path cache = folder / "pocl-cache", json = folder / "bench.json";
   const CliResult cli = run_command("POCL_CACHE_DIR=" + cache.string() + " " + HELIOSTAND_EXECUTABLE +
-                                    " bench stand " + source_path("validation/bench/stands/tiny.toml").string() +
+                                    " bench stand " + tiny_bench_stand.string() +
                                     " --years 3 --device opencl -o " + json.string() + " -q");
   ASSERT_EQ(cli.status, 0) << cli.output;
   const std::string device = nlohmann::json::parse(read_text(json)).at("device");

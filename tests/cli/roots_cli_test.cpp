@@ -10,10 +10,10 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 #include "cli/cli_runner.hpp"
 #include "io/csv_test_reader.hpp"
+#include "io/read_multiblock.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -44,10 +44,7 @@ vtkDataObject* named_block(vtkMultiBlockDataSet* multiblock, const std::string& 
 }
 
 vtkSmartPointer<vtkMultiBlockDataSet> read_year(const fs::path& out, const std::string& file) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName((out / "stand" / file).c_str());
-  reader->Update();
-  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  return testing::read_multiblock(out / "stand" / file);
 }
 
 TEST(RootsCli, RootsAndSoilAreWrittenWithTheTrees) {

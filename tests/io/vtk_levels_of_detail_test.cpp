@@ -24,8 +24,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
+#include "io/read_multiblock.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
 #include "io/tree_cell_data.hpp"
@@ -36,10 +36,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<std::string> block_names(const fs::path& vtm) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName(vtm.string().c_str());
-  reader->Update();
-  auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  const vtkSmartPointer<vtkMultiBlockDataSet> multiblock = testing::read_multiblock(vtm);
   std::vector<std::string> names;
   for (unsigned i = 0; i < multiblock->GetNumberOfBlocks(); ++i)
     if (multiblock->GetBlock(i) != nullptr)  // an empty block is an unnamed placeholder in the file

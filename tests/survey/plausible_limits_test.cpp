@@ -47,8 +47,7 @@ TEST(PlausibleLimits, EachColumnsLimitIsAnErrorJustAboveIt) {
 }
 
 TEST(PlausibleLimits, ValuesAtTheLimitsPass) {
-  SurveyReadOptions options;
-  options.stand_age_years = 35;
+  const SurveyReadOptions options = testing::stand_of_age();
   const Survey survey =
       read_survey(write_test_file("limits_ok.csv", "x,y,height,dbh,crown_radius,age\n1e7,-1e7,130,1500,30,5000\n"),
                   options);
@@ -64,8 +63,7 @@ TEST(PlausibleLimits, TheCrashingHeightOfTheIssueIsRefused) {
 
 TEST(PlausibleLimits, TheLimitAppliesAfterUnitConversion) {
   // 13,000 cm is 130 m (allowed); 1,300 ft is 396 m (refused).
-  SurveyReadOptions options;
-  options.stand_age_years = 35;
+  const SurveyReadOptions options = testing::stand_of_age();
   const Survey survey = read_survey(write_test_file("limits_cm.csv", "x,y,height_cm\n1,1,13000\n"), options);
   EXPECT_DOUBLE_EQ(survey.trees[0].height_m, 130.0);
   EXPECT_THAT(limit_problems("x,y,height_ft\n1,1,1300\n"),
@@ -73,8 +71,7 @@ TEST(PlausibleLimits, TheLimitAppliesAfterUnitConversion) {
 }
 
 TEST(PlausibleLimits, SlendernessOutsideTheRangeWarns) {
-  SurveyReadOptions options;
-  options.stand_age_years = 35;
+  const SurveyReadOptions options = testing::stand_of_age();
   // 500 m would be an error; 40 m with a 12-cm DBH (ratio 333) is a warning, a 3-m sapling is exempt.
   const Survey survey = read_survey(
       write_test_file("slender.csv", "x,y,height,dbh\n1,1,40,12\n2,2,20,25\n3,3,3,1\n4,4,10,150\n"), options);
