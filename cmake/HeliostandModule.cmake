@@ -36,7 +36,7 @@ function(heliostand_module name)
 
   add_library(heliostand_${name} STATIC ${sources} ${MODULE_SOURCES})
   target_include_directories(heliostand_${name} PRIVATE ${layer})
-  target_compile_options(heliostand_${name} PRIVATE -Wall -Wextra -Wpedantic)
+  target_compile_options(heliostand_${name} PRIVATE ${HELIOSTAND_WARNING_FLAGS})
   list(TRANSFORM MODULE_USES PREPEND heliostand_ OUTPUT_VARIABLE used_libraries)
   target_link_libraries(heliostand_${name} PUBLIC ${used_libraries} ${MODULE_EXTERNAL})
   set_property(GLOBAL APPEND PROPERTY HELIOSTAND_MODULES ${name})

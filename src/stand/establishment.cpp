@@ -50,14 +50,17 @@ std::vector<StandTree> establish_stand(const Scenario& scenario, EstablishmentRe
     const SurveyRecord& record = records[i];
     const SpeciesParameters& species = scenario.species_of(record);
     const int id = static_cast<int>(i);
-    fits[i] = calibrate_tree(species, target_of(record), scenario.run.seed, id);
     const SurveyTarget target = target_of(record);
+    fits[i] = calibrate_tree(species, target, scenario.run.seed, id);
     ConiferTree tree = grow_calibrated_tree(species, fits[i].calibration, target.age_years,
                                             {record.x_m, record.y_m, 0.0}, scenario.run.seed, id,
                                             {target.dbh_cm, target.crown_base_m});
     tree.set_light_driven_crown(true);
-    grown[i].emplace(StandTree{id, record.id, record.species, std::move(tree)});
-    grown[i]->hollows = hollows_of(record, scenario.run.seed, id);
+    grown[i].emplace(StandTree{.id = id,
+                               .label = record.id,
+                               .species = record.species,
+                               .conifer = std::move(tree),
+                               .hollows = hollows_of(record, scenario.run.seed, id)});
   });
 
   report = {};

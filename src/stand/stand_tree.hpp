@@ -22,6 +22,8 @@ struct LightBudget {
   double relative() const { return absorbed_open > 0.0 ? std::min(1.0, absorbed / absorbed_open) : 0.0; }
 };
 
+// The members after `conifer` carry an initialiser, even an empty one, so that `StandTree{id, label, species,
+// tree}` says "the rest as a new tree has it" without -Wmissing-field-initializers.
 struct StandTree {
   int id = 0;                 // 0-based index in the stand, stable for the whole run
   std::string label;          // the survey record's id
@@ -29,12 +31,12 @@ struct StandTree {
   ConiferTree conifer;        // the growing tree: stem and crown, shoot by shoot (its roots are in the root zone)
   TreeStatus status = TreeStatus::alive;
   int status_changed_at_age = -1;  // stand age of death or removal
-  std::string status_reason;       // e.g. "thinning from below", "light", "suppression"
+  std::string status_reason{};     // e.g. "thinning from below", "light", "suppression"
   // Hollows (docs/hollows.md), seeds resolved: a tree carrying one is a habitat tree, protected from thinning
   // unless a thinning says otherwise.
-  std::vector<hollow::HollowSpec> hollows;
+  std::vector<hollow::HollowSpec> hollows{};
 
-  LightBudget light_budget;  // this year's (Stand::illuminate); zero before the first light field
+  LightBudget light_budget{};  // this year's (Stand::illuminate); zero before the first light field
 
   // The light of each leaf ball (leaf_balls() order), read from its shoots.
   std::vector<LightSample> leaf_ball_light() const;
