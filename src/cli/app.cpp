@@ -9,6 +9,7 @@
 #include "cli/devices_command.hpp"
 #include "cli/number_checks.hpp"
 #include "core/parallel_for.hpp"
+#include "io/vtk_messages.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -21,6 +22,7 @@ void set_up_logging(int verbosity) {
                     : verbosity == 0 ? spdlog::level::info
                                      : spdlog::level::debug);
   spdlog::set_default_logger(logger);
+  log_vtk_messages();
 }
 
 std::string command_line;

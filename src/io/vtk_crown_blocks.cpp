@@ -3,17 +3,20 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkDelaunay3D.h>
 #include <vtkConeSource.h>
 #include <vtkDoubleArray.h>
+#include <vtkFeatureEdges.h>
 #include <vtkHull.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
 #include "io/tree_cell_data.hpp"
+#include "io/vtk_messages.hpp"
 #include "io/vtk_named_array.hpp"
 
 namespace heliostand {
@@ -70,7 +73,19 @@ vtkSmartPointer<vtkDoubleArray> light_at_corners(const TreeSnapshot& tree, vtkPo
   return light;
 }
 
-vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
+// Edges of a surface that do not join exactly two of its cells: 0 for a closed surface.
+vtkIdType open_edges(vtkPolyData& surface) {
+  auto edges = vtkSmartPointer<vtkFeatureEdges>::New();
+  edges->SetInputData(&surface);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfCells();
+}
+
+vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree, int stand_age) {
   auto hull = vtkSmartPointer<vtkHull>::New();
   hull->SetInputData(foliage_extremes(tree));
   hull->AddRecursiveSpherePlanes(hull_sphere_levels);
@@ -84,8 +99,16 @@ vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree) {
   tetrahedra->SetTolerance(envelope_merge_tolerance);
   auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
   surface->SetInputConnection(tetrahedra->GetOutputPort());
-  surface->Update();
+  {
+    // Coplanar corners (each hull face has several) make some tetrahedra degenerate, and VTK warns of it; what
+    // matters is the surface, which is checked below.
+    const VtkWarningsCheckedHere checked;
+    surface->Update();
+  }
   vtkSmartPointer<vtkPolyData> envelope = surface->GetOutput();
+  if (const vtkIdType open = open_edges(*envelope); open > 0)
+    spdlog::warn("VTK output, age {}: the crown envelope of tree '{}' is not a closed surface ({} open edges)",
+                 stand_age, tree.label, open);
   envelope->GetPointData()->Initialize();
   envelope->GetPointData()->AddArray(light_at_corners(tree, *envelope));
   return envelope;
@@ -160,9 +183,9 @@ vtkSmartPointer<vtkPolyData> build_stem_block(const StandSnapshot& snapshot) {
 }
 
 vtkSmartPointer<vtkPolyData> build_crown_envelope_block(const StandSnapshot& snapshot) {
-  return append_per_tree(snapshot, [](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
+  return append_per_tree(snapshot, [&](const TreeSnapshot& tree) -> vtkSmartPointer<vtkPolyData> {
     if (crown_balls(tree).empty()) return nullptr;
-    return crown_envelope(tree);
+    return crown_envelope(tree, snapshot.stand_age);
   });
 }
 

@@ -3,6 +3,7 @@
 // per-tree attributes are on every cell, that the sizes written are stated, and that roots can skip years.
 #include "io/vtk_time_series_writer.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -25,6 +26,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include "io/captured_log.hpp"
 #include "io/read_multiblock.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
@@ -34,6 +36,8 @@
 namespace heliostand {
 namespace {
 namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
 
 std::vector<std::string> block_names(const fs::path& vtm) {
   const vtkSmartPointer<vtkMultiBlockDataSet> multiblock = testing::read_multiblock(vtm);
@@ -68,6 +72,18 @@ vtkSmartPointer<vtkPolyData> tree_cells_of(vtkPolyData& block, int id) {
   return tree;
 }
 
+// Edges that do not join exactly two cells: none on a closed surface.
+vtkIdType open_edges(vtkPolyData& surface) {
+  auto edges = vtkSmartPointer<vtkFeatureEdges>::New();
+  edges->SetInputData(&surface);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfCells();
+}
+
 class LevelsOfDetail : public ::testing::Test {
  protected:
   LevelsOfDetail() : tmp_("vtk_levels_of_detail"), folder_(tmp_.path() / "run", false) {}
@@ -96,14 +112,7 @@ TEST_F(LevelsOfDetail, EveryTreeHasAClosedEnvelopeAroundAllItsLeafBalls) {
     const TreeSnapshot& tree = stand_.snapshot.trees[i];
     vtkSmartPointer<vtkPolyData> envelope = tree_cells_of(*block, tree.id);
     ASSERT_GT(envelope->GetNumberOfCells(), 20) << "tree " << tree.id;
-    auto open_edges = vtkSmartPointer<vtkFeatureEdges>::New();
-    open_edges->SetInputData(envelope);
-    open_edges->BoundaryEdgesOn();
-    open_edges->NonManifoldEdgesOn();
-    open_edges->FeatureEdgesOff();
-    open_edges->ManifoldEdgesOff();
-    open_edges->Update();
-    EXPECT_EQ(open_edges->GetOutput()->GetNumberOfCells(), 0) << "tree " << tree.id << ": the envelope is not closed";
+    EXPECT_EQ(open_edges(*envelope), 0) << "tree " << tree.id << ": the envelope is not closed";
     double bounds[6];
     envelope->GetBounds(bounds);
     for (const LeafBall& ball : tree.leaf_balls)
@@ -151,6 +160,27 @@ TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {
   vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
   EXPECT_EQ(tree_cells_of(*block, stand_.snapshot.trees[1].id)->GetNumberOfCells(), 0);
   EXPECT_GT(tree_cells_of(*block, stand_.snapshot.trees[0].id)->GetNumberOfCells(), 0);
+}
+
+// Seven leaf balls on a quarter-metre grid, found by trying: vtkDelaunay3D meets a degenerate tetrahedron among
+// their hull's corners and warns "1 degenerate triangles encountered, mesh quality suspect", as it does for a few
+// crowns of the example stand. The envelope comes out closed all the same, so the warning is a debug line of the
+// log, not one that asks the user to worry, and the check that would warn (the envelope not closed) stays silent.
+TEST_F(LevelsOfDetail, AnEnvelopeVtkWarnsAboutIsClosedAndItsWarningIsOnlyADebugLine) {
+  TreeSnapshot& tree = stand_.snapshot.trees[0];
+  tree.leaf_balls.clear();
+  for (const glm::dvec3 centre :
+       {glm::dvec3(-0.75, -0.5, -1.25), glm::dvec3(-1, -0.25, 1.25), glm::dvec3(-0.5, 0.25, 0.5),
+        glm::dvec3(-0.75, -0.5, -0.25), glm::dvec3(0.75, -0.75, 0), glm::dvec3(-0.75, 0, -1.5),
+        glm::dvec3(-0.5, 0.75, 1.75)})
+    tree.leaf_balls.push_back({centre, 0.25});
+  tree.leaf_ball_light.assign(tree.leaf_balls.size(), 0.5);
+  stand_.snapshot.trees.resize(1);
+  const testing::CapturedLog log;
+  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  EXPECT_EQ(open_edges(*block), 0);
+  EXPECT_THAT(log.text(), HasSubstr("debug: VTK (vtkDelaunay3D.cxx:")) << "the case no longer makes VTK warn";
+  EXPECT_THAT(log.text(), Not(HasSubstr("warning:")));
 }
 
 TEST_F(LevelsOfDetail, EachConeSpansItsTreesCrown) {
