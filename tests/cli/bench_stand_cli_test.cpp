@@ -11,12 +11,12 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
+#include "io/read_multiblock.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -42,11 +42,9 @@ Bench bench_tiny(const fs::path& folder, const std::string& extra = "", const st
   return bench;
 }
 
-vtkPolyData* block_of_year(const fs::path& run, const std::string& name, vtkSmartPointer<vtkXMLMultiBlockDataReader>& reader) {
-  reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName((run / "stand" / "stand_age_0021.vtm").c_str());
-  reader->Update();
-  auto* year = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+// A block of the run's last year (age 21), or null where the year has none of that name.
+vtkSmartPointer<vtkPolyData> block_of_year(const fs::path& run, const std::string& name) {
+  vtkSmartPointer<vtkMultiBlockDataSet> year = testing::read_multiblock(run / "stand" / "stand_age_0021.vtm");
   for (unsigned i = 0; year != nullptr && i < year->GetNumberOfBlocks(); ++i) {
     const char* block_name = year->GetMetaData(i)->Get(vtkCompositeDataSet::NAME());
     if (block_name != nullptr && name == block_name) return vtkPolyData::SafeDownCast(year->GetBlock(i));
@@ -204,9 +202,8 @@ TEST(BenchStandCli, CountsMatchTheGrownStand) {
       run_cli("grow " + tiny_bench_stand.string() + " --years 1 --device reference --out " + (folder / "grown").string() +
               " -q");
   ASSERT_EQ(grown.status, 0) << grown.output;
-  vtkSmartPointer<vtkXMLMultiBlockDataReader> balls_reader, roots_reader;
-  vtkPolyData* balls = block_of_year(folder / "grown", "leaf_balls", balls_reader);
-  vtkPolyData* roots = block_of_year(folder / "grown", "roots", roots_reader);
+  vtkSmartPointer<vtkPolyData> balls = block_of_year(folder / "grown", "leaf_balls");
+  vtkSmartPointer<vtkPolyData> roots = block_of_year(folder / "grown", "roots");
   ASSERT_NE(balls, nullptr);
   ASSERT_NE(roots, nullptr);
   EXPECT_EQ(bench.json.at("leaf_balls_at_end").get<vtkIdType>(), balls->GetNumberOfPoints());
