@@ -10,11 +10,11 @@
 #include <vtkDelaunay3D.h>
 #include <vtkConeSource.h>
 #include <vtkDoubleArray.h>
-#include <vtkFeatureEdges.h>
 #include <vtkHull.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include "io/open_edges.hpp"
 #include "io/tree_cell_data.hpp"
 #include "io/vtk_messages.hpp"
 #include "io/vtk_named_array.hpp"
@@ -71,18 +71,6 @@ vtkSmartPointer<vtkDoubleArray> light_at_corners(const TreeSnapshot& tree, vtkPo
     light->InsertNextValue(lit ? tree.leaf_ball_light[nearest] : std::numeric_limits<double>::quiet_NaN());
   }
   return light;
-}
-
-// Edges of a surface that do not join exactly two of its cells: 0 for a closed surface.
-vtkIdType open_edges(vtkPolyData& surface) {
-  auto edges = vtkSmartPointer<vtkFeatureEdges>::New();
-  edges->SetInputData(&surface);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfCells();
 }
 
 vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree, int stand_age) {

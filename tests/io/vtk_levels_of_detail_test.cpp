@@ -18,7 +18,6 @@
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
-#include <vtkFeatureEdges.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkIdList.h>
@@ -27,6 +26,7 @@
 #include <vtkPolyData.h>
 
 #include "io/captured_log.hpp"
+#include "io/open_edges.hpp"
 #include "io/read_multiblock.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
@@ -70,18 +70,6 @@ vtkSmartPointer<vtkPolyData> tree_cells_of(vtkPolyData& block, int id) {
   }
   tree->SetPoints(points);
   return tree;
-}
-
-// Edges that do not join exactly two cells: none on a closed surface.
-vtkIdType open_edges(vtkPolyData& surface) {
-  auto edges = vtkSmartPointer<vtkFeatureEdges>::New();
-  edges->SetInputData(&surface);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfCells();
 }
 
 class LevelsOfDetail : public ::testing::Test {
