@@ -22,8 +22,9 @@ struct LightBudget {
   double relative() const { return absorbed_open > 0.0 ? std::min(1.0, absorbed / absorbed_open) : 0.0; }
 };
 
-// The members after `conifer` carry an initialiser, even an empty one, so that `StandTree{id, label, species,
-// tree}` says "the rest as a new tree has it" without -Wmissing-field-initializers.
+// The members after `conifer` carry an initialiser, even an empty one, so that an aggregate initialisation that
+// stops at `conifer` or skips members (`StandTree{.id = …, .conifer = …, .hollows = …}`) says "the rest as a new
+// tree has it" without -Wmissing-field-initializers, which gcc raises for designated initialisers too.
 struct StandTree {
   int id = 0;                 // 0-based index in the stand, stable for the whole run
   std::string label;          // the survey record's id
