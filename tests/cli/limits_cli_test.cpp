@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "cli/cli_runner.hpp"
+#include "core/seconds_since.hpp"
 #include "scenario/scenario_limit_cases.hpp"
 
 namespace heliostand::testing {
@@ -62,7 +63,7 @@ TEST_P(KeyAtItsLimit, GrowsOneYearOrIsRefusedCleanly) {
                                                    "--device reference -q",
                                                    memory_cap(), hang_seconds, HELIOSTAND_EXECUTABLE,
                                                    (folder / "scenario.toml").string(), (folder / "out").string()));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   RecordProperty("seconds", fmt::format("{:.1f}", seconds));
   ASSERT_NE(result.status, 137) << c.key_path << " = " << c.at_limit() << ": killed after " << hang_seconds << " s";
   ASSERT_TRUE(result.status == 0 || result.status == 2)

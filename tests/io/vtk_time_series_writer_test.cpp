@@ -19,7 +19,6 @@
 #include <vtkStringArray.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 #include "io/file_size_limit.hpp"
 #include "io/read_multiblock.hpp"

@@ -19,7 +19,6 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkStringArray.h>
-#include <vtkXMLMultiBlockDataReader.h>
 
 #include "io/read_multiblock.hpp"
 #include "io/stand_output.hpp"

@@ -26,6 +26,7 @@
 #include "architecture/crown_metrics.hpp"
 #include "architecture/kanamaru_growth.hpp"
 #include "core/input_error.hpp"
+#include "core/seconds_since.hpp"
 #include "crown_shape.hpp"
 #include "experiments/kanamaru/kanamaru_scenario.hpp"
 #include "io/dichotomy_tree_vtk.hpp"
@@ -566,7 +567,7 @@ int validate(const std::string& out, bool full, const std::string& only, int see
     } catch (const RunawayCrown& runaway) {
       report.check(false, fmt::format("Fig. {}: a crown ran away, the figure was stopped: {}", number, runaway.what()));
     }
-    std::cerr << "  (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
+    std::cerr << "  (" << seconds_since(start) << " s)\n";
   }
   gallery.write_index();
   std::ostringstream md;
