@@ -45,7 +45,8 @@ StandOutput::StandOutput(const StandOutputOptions& options)
     : plot_area_m2_(checked_plot_area(options.plot_area_m2)),
       folder_(options.folder, options.force, options.resume),
       ledger_(plot_area_m2_ / kSquareMetresPerHectare) {
-  if (options.write_vtk) vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_, stand_blocks(options.detail));
+  if (options.write_vtk)
+    vtk_ = std::make_unique<VtkTimeSeriesWriter>(folder_, stand_blocks(options.detail), options.compression);
   if (options.resume) {
     // What the killed run was writing when it died (a VTK year, a checkpoint) is not part of any checkpoint.
     folder_.remove_stray_temporaries({temporary_sibling(folder_.path_of(stand_table_file)),

@@ -27,6 +27,7 @@
 #include "records/tree_event.hpp"
 #include "records/year_recorder.hpp"
 #include "scenario/output_detail.hpp"
+#include "scenario/vtk_compression.hpp"
 
 namespace heliostand {
 
@@ -36,6 +37,7 @@ struct StandOutputOptions {
   double plot_area_m2 = 0;   // for the per-hectare values of stand_table.csv
   bool write_vtk = true;     // false: tables only (batch forecasts)
   OutputDetail detail = OutputDetail::full;  // the VTK blocks (scenario/output_detail.hpp)
+  VtkCompression compression = default_vtk_compression;  // the VTK pieces' (scenario/vtk_compression.hpp)
   // Take over the folder of an interrupted run (OutputFolder's resume); the tables are reopened by a checkpoint
   // (io/checkpoint_state.hpp), which cuts them back to the rows it counts, instead of being started afresh.
   bool resume = false;

@@ -15,8 +15,9 @@
 namespace heliostand {
 namespace fs = std::filesystem;
 
-VtkTimeSeriesWriter::VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks)
-    : folder_(folder), blocks_(std::move(blocks)), sizes_csv_("stand_age,block,bytes\n") {}
+VtkTimeSeriesWriter::VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks,
+                                         VtkCompression compression)
+    : folder_(folder), blocks_(std::move(blocks)), compression_(compression), sizes_csv_("stand_age,block,bytes\n") {}
 
 fs::path VtkTimeSeriesWriter::year_file(int stand_age) {
   return fs::path(year_folder) / fmt::format("stand_age_{:04d}.vtm", stand_age);
@@ -44,6 +45,16 @@ std::string empty_year_vtm(const StandSnapshot& snapshot) {
 void replace_with(const fs::path& from, const fs::path& to) {
   if (fs::is_directory(to)) fs::remove_all(to);
   fs::rename(from, to);
+}
+
+// VTK's XML writers compress each piece's appended data in blocks with the chosen compressor; zlib at VTK's default
+// level, as every series before run.vtk_compression was written.
+void set_compressor(vtkXMLWriterBase& writer, VtkCompression compression) {
+  switch (compression) {
+    case VtkCompression::lz4: writer.SetCompressorTypeToLZ4(); return;
+    case VtkCompression::zlib: writer.SetCompressorTypeToZLib(); return;
+    case VtkCompression::none: writer.SetCompressorTypeToNone(); return;
+  }
 }
 
 double megabytes(std::uintmax_t bytes) { return static_cast<double>(bytes) / 1e6; }
@@ -98,7 +109,7 @@ fs::path VtkTimeSeriesWriter::write_year(const StandSnapshot& snapshot) {
   writer->SetInputData(build_stand_multiblock(snapshot, blocks_));
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
+  set_compressor(*writer, compression_);
   write_checked(*writer, final_vtm);
 
   if (!fs::exists(staged_vtm)) write_whole_file(staged_vtm, empty_year_vtm(snapshot), final_vtm);

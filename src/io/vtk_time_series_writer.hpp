@@ -13,6 +13,7 @@
 #include "io/pvd_collection.hpp"
 #include "io/vtk_stand_blocks.hpp"
 #include "records/stand_snapshot.hpp"
+#include "scenario/vtk_compression.hpp"
 
 namespace heliostand {
 
@@ -22,7 +23,8 @@ class VtkTimeSeriesWriter {
   static constexpr const char* year_folder = "stand";
   static constexpr const char* sizes_file = "vtk_sizes.csv";
 
-  explicit VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks = default_stand_blocks());
+  explicit VtkTimeSeriesWriter(OutputFolder& folder, std::vector<StandBlock> blocks = default_stand_blocks(),
+                               VtkCompression compression = default_vtk_compression);
 
   // Adds a block to every year written from now on (e.g. roots, soil).
   void add_block(StandBlock block) { blocks_.push_back(std::move(block)); }
@@ -39,6 +41,7 @@ class VtkTimeSeriesWriter {
 
   OutputFolder& folder_;
   std::vector<StandBlock> blocks_;
+  VtkCompression compression_;
   PvdCollection collection_;
   std::string sizes_csv_;  // vtk_sizes.csv so far
 };

@@ -202,8 +202,13 @@ SimulationSummary run_simulation(const Scenario& scenario, const SimulationOptio
   const checkpoint::RunIdentity identity = options.checkpoint_every_years > 0 || options.resume
                                                ? run_identity(scenario, solvers.backend.name(), options.write_vtk)
                                                : checkpoint::RunIdentity{};
-  StandOutput output({options.output_folder, options.force, scenario.plot_area_ha() * 1e4, options.write_vtk,
-                      scenario.run.output_detail, options.resume});
+  StandOutput output({.folder = options.output_folder,
+                      .force = options.force,
+                      .plot_area_m2 = scenario.plot_area_ha() * 1e4,
+                      .write_vtk = options.write_vtk,
+                      .detail = scenario.run.output_detail,
+                      .compression = scenario.run.vtk_compression,
+                      .resume = options.resume});
 
   StageClock clock;
   // A resumed run's stand and roots come from its checkpoint: they start empty and are not spun up.

@@ -31,6 +31,14 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
       reader.problem("detail", fmt::format("expected \"full\", \"envelope\" or \"cone\", got \"{}\"", *detail));
     }
   }
+  if (auto compression = reader.string("vtk_compression")) {
+    if (auto parsed = parse_vtk_compression(*compression)) {
+      run.vtk_compression = *parsed;
+    } else {
+      reader.problem("vtk_compression",
+                     fmt::format("expected \"lz4\", \"zlib\" or \"none\", got \"{}\"", *compression));
+    }
+  }
   if (auto interval = reader.integer("roots_output_interval", non_negative_up_to(limit::tree_lifetime)))
     run.roots_output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {

@@ -15,6 +15,7 @@
 #include "scenario/output_detail.hpp"
 #include "scenario/roots_settings.hpp"
 #include "scenario/thinning_event.hpp"
+#include "scenario/vtk_compression.hpp"
 #include "survey/survey.hpp"
 #include "survey/survey_format.hpp"
 
@@ -34,6 +35,7 @@ struct RunSettings {
   std::uint64_t seed = 1;
   int output_interval_years = 1;      // write the stand every this many years (and at the start and end)
   OutputDetail output_detail = default_output_detail;  // what the VTK blocks draw of each tree
+  VtkCompression vtk_compression = default_vtk_compression;  // how the VTK pieces are compressed
   int roots_output_interval_years = 1;  // roots and soil blocks in output years at multiples of this age; 0 never
   compute::DeviceChoice device;
 };

@@ -36,7 +36,11 @@ struct RunUnderTest {
   RunUnderTest(const Scenario& scenario, const compute::ComputeBackend& backend, const fs::path& out, int years)
       : solver(make_light_solver(backend, light_of(scenario, false))),
         open_solver(make_light_solver(backend, light_of(scenario, true))),
-        output({out, false, scenario.plot_area_ha() * 1e4, true, scenario.run.output_detail, years < 0}),
+        output({.folder = out,
+                .plot_area_m2 = scenario.plot_area_ha() * 1e4,
+                .detail = scenario.run.output_detail,
+                .compression = scenario.run.vtk_compression,
+                .resume = years < 0}),
         stand(scenario.plot_area_ha(), scenario.stand.age_at_survey_years, trees(scenario, years), {}),
         roots(years < 0 ? make_root_zone(scenario, backend) : establish_root_zone(scenario, stand, backend)),
         year(stand, *solver, *open_solver, &*roots, &output, {scenario.run.seed, 1.0, scenario.run.years, 1}, clock) {

@@ -5,9 +5,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <regex>
 #include <string>
 #include <utility>
 
+#include <vtkAbstractArray.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -266,6 +269,77 @@ TEST_F(VtkTimeSeries, AYearWithoutTreesIsStillAReadableTimeStep) {
   const auto entries = parse_pvd(folder_.path_of(VtkTimeSeriesWriter::collection_file));
   ASSERT_EQ(entries.size(), 1u);
   EXPECT_EQ(entries[0].timestep, 60.0);
+}
+
+// The compressor a piece file names in its header, as VTK's readers choose their decompressor by it; "" for a piece
+// written raw, whose header names none.
+std::string piece_compressor(const fs::path& piece) {
+  const std::string text = testing::read_text(piece);
+  const std::string header = text.substr(0, text.find('>', text.find("<VTKFile")));
+  std::smatch compressor;
+  return std::regex_search(header, compressor, std::regex(R"re(compressor="([^"]*)")re")) ? compressor[1].str() : "";
+}
+
+// Every number of a year, block by block: the points, each line's, polygon's and strip's point ids, then every point
+// and cell array (a string array by its count), so that two writings of one year compare whole.
+std::vector<double> numbers_of(vtkMultiBlockDataSet& multiblock) {
+  std::vector<double> numbers;
+  const auto add_array = [&numbers](vtkAbstractArray* array) {
+    numbers.push_back(static_cast<double>(array->GetNumberOfValues()));
+    if (auto* data = vtkDataArray::SafeDownCast(array))
+      for (vtkIdType i = 0; i < data->GetNumberOfValues(); ++i)
+        numbers.push_back(data->GetComponent(i / data->GetNumberOfComponents(), int(i % data->GetNumberOfComponents())));
+  };
+  for (unsigned b = 0; b < multiblock.GetNumberOfBlocks(); ++b) {
+    auto* block = vtkPolyData::SafeDownCast(multiblock.GetBlock(b));
+    if (!block) continue;
+    if (block->GetPoints()) add_array(block->GetPoints()->GetData());
+    for (vtkCellArray* cells : {block->GetLines(), block->GetPolys(), block->GetStrips()})
+      if (cells) add_array(cells->GetConnectivityArray());
+    for (vtkFieldData* arrays : {static_cast<vtkFieldData*>(block->GetPointData()),
+                                 static_cast<vtkFieldData*>(block->GetCellData())})
+      for (int a = 0; a < arrays->GetNumberOfArrays(); ++a) add_array(arrays->GetAbstractArray(a));
+  }
+  return numbers;
+}
+
+// The first index at which two lists of numbers differ, NaN equal to NaN (a value not defined, e.g. a tree's light
+// before its first light field); -1 where they are the same.
+long first_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  for (std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
+    if (i >= a.size() || i >= b.size()) return long(i);
+    if (a[i] != b[i] && !(std::isnan(a[i]) && std::isnan(b[i]))) return long(i);
+  }
+  return -1;
+}
+
+// run.vtk_compression: every piece of a year names the compressor it was written with (LZ4 unless told otherwise),
+// and each compressor gives back the same year, number for number.
+TEST_F(VtkTimeSeries, EachCompressionNamesItsCompressorInEveryPieceAndGivesBackTheSameYear) {
+  const auto stand = testing::make_synthetic_stand(10, 0);
+  std::vector<double> first;
+  const std::vector<std::pair<std::optional<VtkCompression>, std::string>> compressions{
+      {std::nullopt, "vtkLZ4DataCompressor"},
+      {VtkCompression::lz4, "vtkLZ4DataCompressor"},
+      {VtkCompression::zlib, "vtkZLibDataCompressor"},
+      {VtkCompression::none, ""}};
+  for (const auto& [compression, compressor] : compressions) {
+    const std::string name = compression ? std::string(name_of(*compression)) : "default";
+    OutputFolder folder(tmp_.path() / name, false);
+    VtkTimeSeriesWriter writer = compression ? VtkTimeSeriesWriter(folder, default_stand_blocks(), *compression)
+                                             : VtkTimeSeriesWriter(folder);
+    const fs::path vtm = folder.path_of(writer.write_year(stand.snapshot));
+    int pieces = 0;
+    for (const auto& piece : fs::directory_iterator(fs::path(vtm).replace_extension())) {
+      EXPECT_EQ(piece_compressor(piece.path()), compressor) << name << ": " << piece.path();
+      ++pieces;
+    }
+    EXPECT_EQ(pieces, 3) << name;  // branches, leaf_balls, trees
+    const std::vector<double> numbers = numbers_of(*read_multiblock(vtm));
+    EXPECT_GT(numbers.size(), 100u) << name;
+    if (first.empty()) first = numbers;
+    EXPECT_EQ(first_difference(numbers, first), -1) << name;
+  }
 }
 
 // VTK's writers return success from a write that failed and report it only in their error code: the year must

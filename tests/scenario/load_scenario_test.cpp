@@ -26,6 +26,8 @@ TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   EXPECT_EQ(s.run.seed, 1u);
   EXPECT_EQ(s.run.output_interval_years, 1);
   EXPECT_EQ(s.run.device, DeviceChoice{});
+  EXPECT_EQ(s.run.output_detail, OutputDetail::envelope);
+  EXPECT_EQ(s.run.vtk_compression, VtkCompression::lz4);
   // No [species]: one Todomatsu with the seed-001 values.
   ASSERT_EQ(s.species.size(), 1u);
   EXPECT_EQ(s.stand.default_species, "todomatsu");
@@ -41,6 +43,16 @@ TEST(LoadScenario, MinimalScenarioTakesTheDefaults) {
   EXPECT_TRUE(s.thinning.empty());
   ASSERT_EQ(s.survey.trees.size(), 4u);
   EXPECT_EQ(s.species_of(s.survey.trees[0]).name, "todomatsu");
+}
+
+TEST(LoadScenario, VtkCompressionIsReadFromRun) {
+  for (const auto& [text, compression] :
+       {std::pair{"lz4", VtkCompression::lz4}, {"zlib", VtkCompression::zlib}, {"none", VtkCompression::none}}) {
+    const Scenario s = load_scenario(
+        write_scenario(std::string("compression-") + text,
+                       minimal_stand + "vtk_compression = \"" + text + "\"\n"));  // minimal_stand ends in [run]
+    EXPECT_EQ(s.run.vtk_compression, compression) << text;
+  }
 }
 
 // The periodic light domain: the plot unless [light] gives its own, and what the stand solver is handed

@@ -46,7 +46,7 @@ TEST(ScenarioErrors, UnknownKeysAndTables) {
               ElementsAre("scenario.toml:12: key 'hollows': unknown table or key (known: stand, run, species, light, "
                           "competition, thinning, roots, soil, coupling, root_pruning, hollow)",
                           "scenario.toml:11: key 'run.yeras': unknown key (known keys here: detail, device, "
-                          "output_interval, roots_output_interval, seed, years)",
+                          "output_interval, roots_output_interval, seed, vtk_compression, years)",
                           "scenario.toml:15: key 'light.sky_band': unknown key (known keys here: cutoff_m, exact, "
                           "far_field_bias_correction, far_field_cell_m, far_field_hand_over_cells, far_field_table_mb, ground_albedo, "
                           "intensity_ratio, periodic, plot_x_max, plot_x_min, plot_y_max, plot_y_min, "
@@ -77,6 +77,14 @@ TEST(ScenarioErrors, LevelOfDetailAndRootsOutputInterval) {
   EXPECT_THAT(scenario_problems("detail", minimal_stand + "detail = \"leaves\"\nroots_output_interval = -1\n"),
               ElementsAre("scenario.toml:11: key 'run.detail': expected \"full\", \"envelope\" or \"cone\", got \"leaves\"",
                           "scenario.toml:12: key 'run.roots_output_interval': expected an integer in [0, 5000], got -1"));
+}
+
+TEST(ScenarioErrors, VtkCompression) {
+  EXPECT_THAT(scenario_problems("compression", minimal_stand + "vtk_compression = \"gzip\"\n"),
+              ElementsAre("scenario.toml:11: key 'run.vtk_compression': expected \"lz4\", \"zlib\" or \"none\", got "
+                          "\"gzip\""));
+  EXPECT_THAT(scenario_problems("compression_type", minimal_stand + "vtk_compression = 6\n"),
+              ElementsAre("scenario.toml:11: key 'run.vtk_compression': expected a string, got an integer"));
 }
 
 TEST(ScenarioErrors, NoSpeciesMayTakeTheWholeStandsName) {

@@ -94,7 +94,7 @@ TEST(ScenarioLimits, EveryNumericKeyHasALimitCase) {
   const std::string probe = "zz_probe = 0\n";
   const std::vector<Table> tables{
       {"stand", stand, {"survey", "survey_separator", "multi_stem", "survey_units", "default_species"}},
-      {"run", testing::stand_table() + testing::default_run + probe, {"seed", "device", "detail"}},
+      {"run", testing::stand_table() + testing::default_run + probe, {"seed", "device", "detail", "vtk_compression"}},
       {"species.todomatsu", testing::stand_table() + testing::default_run + "[species.todomatsu]\n" + probe, {}},
       {"light", testing::stand_table() + testing::default_run + "[light]\n" + probe,
        {"exact", "periodic", "sky", "far_field_bias_correction"}},
