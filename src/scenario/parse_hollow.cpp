@@ -47,16 +47,11 @@ void read_sizes(TomlTableReader& reader, hollow::HollowSpec& spec) {
   if (auto corners = reader.integer("polygon_corners", between(4, 36))) spec.polygon_corners = static_cast<int>(*corners);
 }
 
+constexpr NamedChoices<hollow::Placement, 2> placement_names{
+    {{hollow::Placement::cylindrical, "cylindrical"}, {hollow::Placement::tangent_plane, "tangent_plane"}}};
+
 void read_placement(TomlTableReader& reader, hollow::HollowSpec& spec) {
-  const auto name = reader.string("placement");
-  if (!name) return;
-  if (*name == "cylindrical") {
-    spec.placement = hollow::Placement::cylindrical;
-  } else if (*name == "tangent_plane") {
-    spec.placement = hollow::Placement::tangent_plane;
-  } else {
-    reader.problem("placement", fmt::format("expected \"cylindrical\" or \"tangent_plane\", got \"{}\"", *name));
-  }
+  if (auto placement = reader.choice("placement", placement_names)) spec.placement = *placement;
 }
 
 void parse_one(const toml::table& table, const std::string& path, ScenarioDraft& draft, ScenarioProblems& problems) {

@@ -33,6 +33,9 @@ const std::array<ParameterField<L>, 17> light_fields{{
     {"plot_y_max", &L::plot_y_max, magnitude_up_to(limit::coordinate_m)},
 }};
 
+constexpr NamedChoices<LightParameters::Sky, 2> sky_names{
+    {{LightParameters::Sky::standard_overcast, "overcast"}, {LightParameters::Sky::kanamaru, "kanamaru"}}};
+
 }  // namespace
 
 void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems) {
@@ -50,11 +53,7 @@ void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
   if (!table) return;
   TomlTableReader reader(*table, "light", problems);
   read_parameter_fields<L>(reader, light_fields, light);
-  if (auto sky = reader.string("sky")) {
-    if (*sky == "overcast") light.sky = LightParameters::Sky::standard_overcast;
-    else if (*sky == "kanamaru") light.sky = LightParameters::Sky::kanamaru;
-    else reader.problem("sky", fmt::format("expected \"overcast\" or \"kanamaru\", got \"{}\"", *sky));
-  }
+  if (auto sky = reader.choice("sky", sky_names)) light.sky = *sky;
   reader.report_unknown_keys();
 
   // The first V/2 bands are the upper hemisphere: V must split evenly.

@@ -4,7 +4,9 @@
 
 #include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
+#include "scenario/output_detail.hpp"
 #include "scenario/toml_table_reader.hpp"
+#include "scenario/vtk_compression.hpp"
 
 namespace heliostand::scenario_detail {
 
@@ -24,21 +26,8 @@ void parse_run(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& p
   }
   if (auto seed = reader.integer("seed", any_seed())) run.seed = static_cast<std::uint64_t>(*seed);
   if (auto interval = reader.integer("output_interval", from_up_to(1, limit::tree_lifetime))) run.output_interval_years = static_cast<int>(*interval);
-  if (auto detail = reader.string("detail")) {
-    if (auto parsed = parse_output_detail(*detail)) {
-      run.output_detail = *parsed;
-    } else {
-      reader.problem("detail", fmt::format("expected \"full\", \"envelope\" or \"cone\", got \"{}\"", *detail));
-    }
-  }
-  if (auto compression = reader.string("vtk_compression")) {
-    if (auto parsed = parse_vtk_compression(*compression)) {
-      run.vtk_compression = *parsed;
-    } else {
-      reader.problem("vtk_compression",
-                     fmt::format("expected \"lz4\", \"zlib\" or \"none\", got \"{}\"", *compression));
-    }
-  }
+  if (auto detail = reader.choice("detail", output_detail_names)) run.output_detail = *detail;
+  if (auto compression = reader.choice("vtk_compression", vtk_compression_names)) run.vtk_compression = *compression;
   if (auto interval = reader.integer("roots_output_interval", non_negative_up_to(limit::tree_lifetime)))
     run.roots_output_interval_years = static_cast<int>(*interval);
   if (auto device = reader.string("device")) {

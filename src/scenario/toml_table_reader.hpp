@@ -1,6 +1,7 @@
 #pragma once
 // Typed, range-checked reading of one TOML table. Every key the parser asks for is remembered, so that
 // afterwards every other key can be reported as unknown (a misspelt key must not silently do nothing).
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -9,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "scenario/named_choice.hpp"
 #include "scenario/scenario_problems.hpp"
 
 namespace heliostand {
@@ -53,6 +55,18 @@ class TomlTableReader {
   std::optional<std::int64_t> integer(std::string_view key, NumberRange range, bool required = false);
   std::optional<bool> boolean(std::string_view key, bool required = false);
   std::optional<std::string> string(std::string_view key, bool required = false);
+  // A string that must be one of `choices`' names: the value it names, else nullopt and a problem listing the names.
+  template <typename Value, std::size_t N>
+  std::optional<Value> choice(std::string_view key, const NamedChoices<Value, N>& choices) {
+    const std::optional<std::string> text = string(key);
+    if (!text) return std::nullopt;
+    const std::optional<Value> value = choice_named(choices, *text);
+    if (!value) {  // appended, not added: gcc 12 warns (-Wrestrict) at "literal" + string
+      std::string reason = std::string("expected ").append(quoted_names(choices));
+      problem(key, reason.append(", got \"").append(*text).append("\""));
+    }
+    return value;
+  }
   // The raw node (or null), marked as known; for values the caller checks itself.
   const toml::node* node(std::string_view key);
 

@@ -4,19 +4,21 @@
 //   zlib  the smallest files (VTK's default level, as every series before this key), for archives and slow disks
 //   none  raw binary, as quick to write as lz4, about three times zlib's files
 // VTK's readers (LZ4 since VTK 8.0) and so ParaView read all three; each piece names its compressor in its header.
-#include <optional>
 #include <string_view>
+
+#include "scenario/named_choice.hpp"
 
 namespace heliostand {
 
 enum class VtkCompression { lz4, zlib, none };
 
-// Compression was most of the example's output stage and half its run with zlib (docs/performance.md,
+// Compression was most of the example's output stage and a third of its run with zlib (docs/performance.md,
 // "The VTK series compressed with LZ4").
 inline constexpr VtkCompression default_vtk_compression = VtkCompression::lz4;
 
-std::string_view name_of(VtkCompression compression);
-// "lz4", "zlib", "none"; nullopt for anything else.
-std::optional<VtkCompression> parse_vtk_compression(std::string_view text);
+inline constexpr NamedChoices<VtkCompression, 3> vtk_compression_names{
+    {{VtkCompression::lz4, "lz4"}, {VtkCompression::zlib, "zlib"}, {VtkCompression::none, "none"}}};
+
+constexpr std::string_view name_of(VtkCompression compression) { return name_in(vtk_compression_names, compression); }
 
 }  // namespace heliostand

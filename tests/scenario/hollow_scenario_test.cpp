@@ -26,7 +26,8 @@ TEST(ScenarioHollows, HollowJoinsItsSurveyRecord) {
                                                       "azimuth_deg = 180\n"
                                                       "width_m = 0.1\n"
                                                       "polygon_corners = 12\n"
-                                                      "seed = 7\n");
+                                                      "seed = 7\n"
+                                                      "placement = \"tangent_plane\"\n");
   const Scenario scenario = load_scenario(file);
   ASSERT_EQ(scenario.survey.trees.size(), 4u);
   EXPECT_TRUE(scenario.survey.trees[0].hollows.empty());
@@ -37,6 +38,7 @@ TEST(ScenarioHollows, HollowJoinsItsSurveyRecord) {
   EXPECT_DOUBLE_EQ(hollow.spec.width_m, 0.1);
   EXPECT_EQ(hollow.spec.polygon_corners, 12);
   EXPECT_EQ(hollow.spec.seed, 7u);
+  EXPECT_EQ(hollow.spec.placement, hollow::Placement::tangent_plane);
   EXPECT_TRUE(hollow.seed_given);
   EXPECT_EQ(hollow.line, 11);
   EXPECT_EQ(hollow.field, "hollow[1]");

@@ -55,6 +55,17 @@ TEST(LoadScenario, VtkCompressionIsReadFromRun) {
   }
 }
 
+TEST(LoadScenario, SkyIsReadFromLight) {
+  EXPECT_EQ(load_scenario(write_scenario("sky-default", minimal_stand)).light.sky,
+            LightParameters::Sky::standard_overcast);
+  for (const auto& [text, sky] : {std::pair{"overcast", LightParameters::Sky::standard_overcast},
+                                  {"kanamaru", LightParameters::Sky::kanamaru}}) {
+    const Scenario s = load_scenario(
+        write_scenario(std::string("sky-") + text, minimal_stand + "[light]\nsky = \"" + text + "\"\n"));
+    EXPECT_EQ(s.light.sky, sky) << text;
+  }
+}
+
 // The periodic light domain: the plot unless [light] gives its own, and what the stand solver is handed
 // (Scenario::stand_light) is that domain: a [light] domain used to be replaced by the plot without a word.
 TEST(LoadScenario, StandLightWrapsTheLightDomain) {

@@ -87,6 +87,11 @@ TEST(ScenarioErrors, VtkCompression) {
               ElementsAre("scenario.toml:11: key 'run.vtk_compression': expected a string, got an integer"));
 }
 
+TEST(ScenarioErrors, SkyIsOneOfItsNames) {
+  EXPECT_THAT(scenario_problems("sky", minimal_stand + "[light]\nsky = \"sunny\"\n"),
+              ElementsAre("scenario.toml:12: key 'light.sky': expected \"overcast\" or \"kanamaru\", got \"sunny\""));
+}
+
 TEST(ScenarioErrors, NoSpeciesMayTakeTheWholeStandsName) {
   EXPECT_THAT(scenario_problems("species_all", minimal_stand + "[species.all]\nheight_k = 0.03\n"),
               ElementsAre("scenario.toml:11: key 'species.all': \"all\" is the whole stand's name in stand_table.csv; "
