@@ -35,7 +35,7 @@ constexpr std::optional<Value> choice_named(const NamedChoices<Value, N>& choice
   return std::nullopt;
 }
 
-// "\"a\", \"b\" or \"c\": the names as a refusal lists them.
+// The names as a refusal lists them: "a", "b" or "c", each in double quotes.
 template <typename Value, std::size_t N>
 std::string quoted_names(const NamedChoices<Value, N>& choices) {
   std::string text;

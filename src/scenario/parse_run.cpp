@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "scenario/output_detail.hpp"
 #include "scenario/scenario_limits.hpp"
 #include "scenario/scenario_tables.hpp"
-#include "scenario/output_detail.hpp"
 #include "scenario/toml_table_reader.hpp"
 #include "scenario/vtk_compression.hpp"
 

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <regex>
 #include <string>
 #include <utility>
@@ -344,7 +345,8 @@ TEST_F(VtkTimeSeries, EachCompressionNamesItsCompressorInEveryPieceAndGivesBackT
 
 // VTK's writers return success from a write that failed and report it only in their error code: the year must
 // still stop the run, with the .vtm's name, and leave nothing of itself behind. A limit of one byte fails the .vtm
-// itself (the system's reason); one of 3 000 bytes lets the .vtm (~830 bytes) through but not its pieces (5–7 kB).
+// itself (the system's reason); one of 3 000 bytes lets the .vtm (~830 bytes) through but not its pieces (5–7 kB
+// with zlib, more with the default LZ4).
 TEST_F(VtkTimeSeries, AYearThatCannotBeWrittenIsAnErrorAndLeavesTheSeriesAsItWas) {
   VtkTimeSeriesWriter writer(folder_);
   writer.write_year(testing::make_synthetic_stand(10, 0).snapshot);
