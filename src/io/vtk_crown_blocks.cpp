@@ -1,6 +1,8 @@
 #include "io/vtk_crown_blocks.hpp"
 
+#include <cstddef>
 #include <limits>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
@@ -14,6 +16,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include "core/parallel_for.hpp"
 #include "io/open_edges.hpp"
 #include "io/tree_cell_data.hpp"
 #include "io/vtk_messages.hpp"
@@ -115,16 +118,21 @@ vtkSmartPointer<vtkPolyData> crown_cone(const TreeSnapshot& tree) {
   return cone->GetOutput();
 }
 
-// One polydata from the trees' pieces, each piece's cells carrying its tree's attributes.
+// One polydata from the trees' pieces, each piece's cells carrying its tree's attributes. The pieces are made on the
+// worker threads (core/parallel_for.hpp), each tree's with VTK objects of its own, and appended in the trees' order,
+// so the block is the same for any number of threads: the crown envelopes were most of a hectare's output year
+// (docs/performance.md, "The crown envelopes on the worker threads").
 template <typename PieceOf>
 vtkSmartPointer<vtkPolyData> append_per_tree(const StandSnapshot& snapshot, PieceOf piece_of) {
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces(snapshot.trees.size());
+  parallel_for(pieces.size(), [&](std::size_t t) { pieces[t] = piece_of(snapshot.trees[t]); });
   auto append = vtkSmartPointer<vtkAppendPolyData>::New();
   TreeCellData cells;
-  for (const TreeSnapshot& tree : snapshot.trees) {
-    vtkSmartPointer<vtkPolyData> piece = piece_of(tree);
+  for (std::size_t t = 0; t < pieces.size(); ++t) {
+    const vtkSmartPointer<vtkPolyData>& piece = pieces[t];
     if (!piece || piece->GetNumberOfCells() == 0) continue;
     append->AddInputData(piece);
-    cells.add(tree, piece->GetNumberOfCells());
+    cells.add(snapshot.trees[t], piece->GetNumberOfCells());
   }
   auto block = vtkSmartPointer<vtkPolyData>::New();
   if (append->GetNumberOfInputConnections(0) == 0) return block;

@@ -25,6 +25,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include "core/parallel_for.hpp"
 #include "io/captured_log.hpp"
 #include "io/open_edges.hpp"
 #include "io/read_multiblock.hpp"
@@ -32,6 +33,7 @@
 #include "io/temp_folder.hpp"
 #include "io/tree_cell_data.hpp"
 #include "io/vtk_crown_blocks.hpp"
+#include "io/vtk_numbers.hpp"
 
 namespace heliostand {
 namespace {
@@ -169,6 +171,35 @@ TEST_F(LevelsOfDetail, AnEnvelopeVtkWarnsAboutIsClosedAndItsWarningIsOnlyADebugL
   EXPECT_EQ(open_edges(*block), 0);
   EXPECT_THAT(log.text(), HasSubstr("debug: VTK (vtkDelaunay3D.cxx:")) << "the case no longer makes VTK warn";
   EXPECT_THAT(log.text(), Not(HasSubstr("warning:")));
+}
+
+// The crowns' pieces are made on the worker threads (io/vtk_crown_blocks.cpp, append_per_tree) and appended in the
+// trees' order: the envelope block and the cone block of 24 trees are the same, number for number, on one thread and
+// on four, and each tree's cells follow the trees' order.
+TEST_F(LevelsOfDetail, TheCrownBlocksAreTheSameOnAnyNumberOfThreads) {
+  StandSnapshot many = stand_.snapshot;
+  many.trees.clear();
+  for (int copy = 0; copy < 8; ++copy)
+    for (TreeSnapshot tree : stand_.snapshot.trees) {  // each a copy moved 12 m further east, with its own id
+      const glm::dvec3 shift(12.0 * copy, 0.0, 0.0);
+      tree.id = static_cast<int>(many.trees.size()) + 1;
+      tree.position += shift;
+      for (LeafBall& ball : tree.leaf_balls) ball.centre += shift;
+      many.trees.push_back(tree);
+    }
+  for (const auto build : {&build_crown_envelope_block, &build_crown_cone_block}) {
+    set_worker_threads(1);
+    const std::vector<double> one = testing::numbers_of(*build(many));
+    set_worker_threads(4);
+    vtkSmartPointer<vtkPolyData> block = build(many);
+    set_worker_threads(0);
+    EXPECT_EQ(testing::first_difference(testing::numbers_of(*block), one), -1);
+    vtkDataArray* ids = block->GetCellData()->GetArray("tree_id");
+    ASSERT_NE(ids, nullptr);
+    ASSERT_GT(ids->GetNumberOfTuples(), 24);
+    for (vtkIdType c = 1; c < ids->GetNumberOfTuples(); ++c) ASSERT_LE(ids->GetTuple1(c - 1), ids->GetTuple1(c));
+    EXPECT_EQ(ids->GetTuple1(ids->GetNumberOfTuples() - 1), 24.0);
+  }
 }
 
 TEST_F(LevelsOfDetail, EachConeSpansItsTreesCrown) {

@@ -10,8 +10,6 @@
 #include <string>
 #include <utility>
 
-#include <vtkAbstractArray.h>
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -28,6 +26,7 @@
 #include "io/read_multiblock.hpp"
 #include "io/synthetic_stand.hpp"
 #include "io/temp_folder.hpp"
+#include "io/vtk_numbers.hpp"
 #include "read_text.hpp"
 
 namespace heliostand {
@@ -281,39 +280,6 @@ std::string piece_compressor(const fs::path& piece) {
   return std::regex_search(header, compressor, std::regex(R"re(compressor="([^"]*)")re")) ? compressor[1].str() : "";
 }
 
-// Every number of a year, block by block: the points, each line's, polygon's and strip's point ids, then every point
-// and cell array (a string array by its count), so that two writings of one year compare whole.
-std::vector<double> numbers_of(vtkMultiBlockDataSet& multiblock) {
-  std::vector<double> numbers;
-  const auto add_array = [&numbers](vtkAbstractArray* array) {
-    numbers.push_back(static_cast<double>(array->GetNumberOfValues()));
-    if (auto* data = vtkDataArray::SafeDownCast(array))
-      for (vtkIdType i = 0; i < data->GetNumberOfValues(); ++i)
-        numbers.push_back(data->GetComponent(i / data->GetNumberOfComponents(), int(i % data->GetNumberOfComponents())));
-  };
-  for (unsigned b = 0; b < multiblock.GetNumberOfBlocks(); ++b) {
-    auto* block = vtkPolyData::SafeDownCast(multiblock.GetBlock(b));
-    if (!block) continue;
-    if (block->GetPoints()) add_array(block->GetPoints()->GetData());
-    for (vtkCellArray* cells : {block->GetLines(), block->GetPolys(), block->GetStrips()})
-      if (cells) add_array(cells->GetConnectivityArray());
-    for (vtkFieldData* arrays : {static_cast<vtkFieldData*>(block->GetPointData()),
-                                 static_cast<vtkFieldData*>(block->GetCellData())})
-      for (int a = 0; a < arrays->GetNumberOfArrays(); ++a) add_array(arrays->GetAbstractArray(a));
-  }
-  return numbers;
-}
-
-// The first index at which two lists of numbers differ, NaN equal to NaN (a value not defined, e.g. a tree's light
-// before its first light field); -1 where they are the same.
-long first_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  for (std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
-    if (i >= a.size() || i >= b.size()) return long(i);
-    if (a[i] != b[i] && !(std::isnan(a[i]) && std::isnan(b[i]))) return long(i);
-  }
-  return -1;
-}
-
 // run.vtk_compression: every piece of a year names the compressor it was written with (LZ4 unless told otherwise),
 // and each compressor gives back the same year, number for number.
 TEST_F(VtkTimeSeries, EachCompressionNamesItsCompressorInEveryPieceAndGivesBackTheSameYear) {
@@ -336,10 +302,10 @@ TEST_F(VtkTimeSeries, EachCompressionNamesItsCompressorInEveryPieceAndGivesBackT
       ++pieces;
     }
     EXPECT_EQ(pieces, 3) << name;  // branches, leaf_balls, trees
-    const std::vector<double> numbers = numbers_of(*read_multiblock(vtm));
+    const std::vector<double> numbers = testing::numbers_of(*read_multiblock(vtm));
     EXPECT_GT(numbers.size(), 100u) << name;
     if (first.empty()) first = numbers;
-    EXPECT_EQ(first_difference(numbers, first), -1) << name;
+    EXPECT_EQ(testing::first_difference(numbers, first), -1) << name;
   }
 }
 
