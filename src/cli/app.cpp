@@ -43,8 +43,8 @@ int run(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
   unsigned threads = 0;
   app.add_option("--threads", threads,
-                 "Threads for the per-tree work (crowns, light response, root buds); the answers do not depend on it. "
-                 "Default: the cores. The OpenCL device chooses its own")
+                 "Threads for the per-tree work (crowns, light response, root buds, the VTK crown envelopes); the "
+                 "answers do not depend on it. Default: the cores. The OpenCL device chooses its own")
       ->check(whole_number_check());
 
   int status = 0;
