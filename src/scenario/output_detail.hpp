@@ -6,7 +6,7 @@
 // The trees block (one point per tree with its measures) is written at every level.
 #include <string_view>
 
-#include "scenario/named_choice.hpp"
+#include "core/named_choice.hpp"
 
 namespace heliostand {
 

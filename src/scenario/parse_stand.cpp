@@ -41,15 +41,8 @@ void parse_survey_units(const toml::node* node, SurveyFormat& format, ScenarioPr
 }
 
 void parse_survey_format(TomlTableReader& reader, SurveyFormat& format) {
-  if (auto name = reader.string("survey_separator")) {
-    if (const auto separator = field_separator_named(*name)) format.separator = *separator;
-    else reader.problem("survey_separator",
-                        fmt::format("expected \"auto\", \"comma\", \"semicolon\" or \"tab\", got \"{}\"", *name));
-  }
-  if (auto name = reader.string("multi_stem")) {
-    if (const auto policy = multi_stem_policy_named(*name)) format.multi_stem = *policy;
-    else reader.problem("multi_stem", fmt::format("expected \"refuse\", \"separate\" or \"merge\", got \"{}\"", *name));
-  }
+  if (auto separator = reader.choice("survey_separator", field_separator_names)) format.separator = *separator;
+  if (auto policy = reader.choice("multi_stem", multi_stem_policy_names)) format.multi_stem = *policy;
   parse_survey_units(reader.node("survey_units"), format, reader.problems());
 }
 

@@ -10,7 +10,7 @@
 
 #include <toml++/toml.h>
 
-#include "scenario/named_choice.hpp"
+#include "core/named_choice.hpp"
 #include "scenario/scenario_problems.hpp"
 
 namespace heliostand {

@@ -6,7 +6,7 @@
 // VTK's readers (LZ4 since VTK 8.0) and so ParaView read all three; each piece names its compressor in its header.
 #include <string_view>
 
-#include "scenario/named_choice.hpp"
+#include "core/named_choice.hpp"
 
 namespace heliostand {
 

@@ -1,30 +1,8 @@
 #include "survey/field_separator.hpp"
 
-#include <array>
+#include <cstddef>
 
 namespace heliostand {
-
-namespace {
-struct NamedSeparator {
-  FieldSeparator separator;
-  std::string_view name;
-  char character;
-};
-constexpr std::array named{NamedSeparator{FieldSeparator::detect, "auto", '\0'},
-                           NamedSeparator{FieldSeparator::comma, "comma", ','},
-                           NamedSeparator{FieldSeparator::semicolon, "semicolon", ';'},
-                           NamedSeparator{FieldSeparator::tab, "tab", '\t'}};
-}  // namespace
-
-std::optional<FieldSeparator> field_separator_named(std::string_view name) {
-  for (const auto& entry : named)
-    if (entry.name == name) return entry.separator;
-  return std::nullopt;
-}
-
-std::string_view field_separator_name(FieldSeparator separator) {
-  return named[static_cast<std::size_t>(separator)].name;
-}
 
 char detect_field_separator(std::string_view text) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
@@ -48,8 +26,13 @@ char detect_field_separator(std::string_view text) {
 }
 
 char separator_char(FieldSeparator separator, std::string_view text) {
-  return separator == FieldSeparator::detect ? detect_field_separator(text)
-                                             : named[static_cast<std::size_t>(separator)].character;
+  switch (separator) {
+    case FieldSeparator::comma: return ',';
+    case FieldSeparator::semicolon: return ';';
+    case FieldSeparator::tab: return '\t';
+    case FieldSeparator::detect: break;
+  }
+  return detect_field_separator(text);
 }
 
 }  // namespace heliostand

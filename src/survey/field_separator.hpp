@@ -2,16 +2,19 @@
 // The character between the fields of a survey file. Inventory exports differ by country and tool: comma
 // (RFC 4180), semicolon (European spreadsheets, where the comma is the decimal mark) and tab (SORTIE-ND tree
 // maps, iLand tree lists). The reader detects it from the header line unless the scenario names it.
-#include <optional>
 #include <string_view>
+
+#include "core/named_choice.hpp"
 
 namespace heliostand {
 
 enum class FieldSeparator { detect, comma, semicolon, tab };
 
-// "auto", "comma", "semicolon", "tab" (scenario key stand.survey_separator); nothing for another word.
-std::optional<FieldSeparator> field_separator_named(std::string_view name);
-std::string_view field_separator_name(FieldSeparator separator);
+// The names of the scenario key stand.survey_separator.
+inline constexpr NamedChoices<FieldSeparator, 4> field_separator_names{{{FieldSeparator::detect, "auto"},
+                                                                        {FieldSeparator::comma, "comma"},
+                                                                        {FieldSeparator::semicolon, "semicolon"},
+                                                                        {FieldSeparator::tab, "tab"}}};
 
 // The separator of the first non-blank line: the most frequent of tab, semicolon and comma outside quotes
 // (comma when none occurs, a one-column file). Ties go tab, then semicolon, then comma: a header cell rarely

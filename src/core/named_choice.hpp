@@ -1,7 +1,8 @@
 #pragma once
 // The names a scenario key's string may take and the value each names (run.detail, run.vtk_compression, light.sky,
-// hollow placement): one table a key, from which its reader (TomlTableReader::choice), its refusal ("expected
-// \"a\", \"b\" or \"c\"") and the value's own name all come.
+// hollow placement, stand.survey_separator, stand.multi_stem): one table a key, kept beside its type, from which the
+// key's reader (scenario/toml_table_reader.hpp, TomlTableReader::choice), its refusal ("expected \"a\", \"b\" or
+// \"c\"") and the value's own name all come. In core, so that the modules below the scenario keep their own tables.
 #include <array>
 #include <cstddef>
 #include <optional>
