@@ -1,5 +1,6 @@
 #include "io/vtk_crown_blocks.hpp"
 
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -8,8 +9,6 @@
 #include <spdlog/spdlog.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
-#include <vtkDataSetSurfaceFilter.h>
-#include <vtkDelaunay3D.h>
 #include <vtkConeSource.h>
 #include <vtkDoubleArray.h>
 #include <vtkHull.h>
@@ -17,9 +16,9 @@
 #include <vtkPoints.h>
 
 #include "core/parallel_for.hpp"
+#include "geometry/convex_hull.hpp"
 #include "io/open_edges.hpp"
 #include "io/tree_cell_data.hpp"
-#include "io/vtk_messages.hpp"
 #include "io/vtk_named_array.hpp"
 
 namespace heliostand {
@@ -29,7 +28,6 @@ namespace {
 // enough for a crown at a few dozen polygons a tree.
 constexpr int hull_sphere_levels = 2;
 constexpr int cone_sides = 8;
-constexpr double envelope_merge_tolerance = 1e-6;  // of the crown size: corners closer than this are one
 
 // The leaf balls a crown is drawn around: the living foliage, or for a tree gone since the previous output year
 // the crown it had when it went (so the year shows the stand before its thinning).
@@ -76,31 +74,43 @@ vtkSmartPointer<vtkDoubleArray> light_at_corners(const TreeSnapshot& tree, vtkPo
   return light;
 }
 
+// The corners of vtkHull's polytope (a few dozen, repeated where its polygons meet) as a closed triangle mesh.
+// vtkHull's own polygons meet at T-junctions and do not share corners, so the surface is their convex hull again,
+// triangulated by Qhull (geometry/convex_hull.hpp). vtkDelaunay3D did this before and left holes in a few crowns
+// whose symmetric whorls put corners nearly on one sphere (docs/performance.md, "The crown envelopes by Qhull").
+vtkSmartPointer<vtkPolyData> closed_surface(vtkPoints& corners) {
+  std::vector<glm::dvec3> points(static_cast<std::size_t>(corners.GetNumberOfPoints()));
+  for (std::size_t p = 0; p < points.size(); ++p) corners.GetPoint(static_cast<vtkIdType>(p), &points[p].x);
+  const ConvexHull hull = convex_hull(points);
+  auto surface_points = vtkSmartPointer<vtkPoints>::New();
+  surface_points->SetDataTypeToDouble();
+  surface_points->SetNumberOfPoints(static_cast<vtkIdType>(hull.corners.size()));
+  for (std::size_t c = 0; c < hull.corners.size(); ++c)
+    surface_points->SetPoint(static_cast<vtkIdType>(c), hull.corners[c].x, hull.corners[c].y, hull.corners[c].z);
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  triangles->AllocateExact(static_cast<vtkIdType>(hull.triangles.size()), 3 * hull.triangles.size());
+  for (const std::array<int, 3>& t : hull.triangles) triangles->InsertNextCell({t[0], t[1], t[2]});
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->SetPoints(surface_points);
+  surface->SetPolys(triangles);
+  return surface;
+}
+
 vtkSmartPointer<vtkPolyData> crown_envelope(const TreeSnapshot& tree, int stand_age) {
   auto hull = vtkSmartPointer<vtkHull>::New();
   hull->SetInputData(foliage_extremes(tree));
   hull->AddRecursiveSpherePlanes(hull_sphere_levels);
   hull->Update();
-  // vtkHull's polygons meet at T-junctions and do not share corners. A Delaunay tetrahedralisation of its corners
-  // (a few dozen points), whose outer surface is their convex hull, gives the same shape as a closed triangle mesh.
-  auto corners = vtkSmartPointer<vtkPolyData>::New();
-  corners->SetPoints(hull->GetOutput()->GetPoints());
-  auto tetrahedra = vtkSmartPointer<vtkDelaunay3D>::New();
-  tetrahedra->SetInputData(corners);
-  tetrahedra->SetTolerance(envelope_merge_tolerance);
-  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-  surface->SetInputConnection(tetrahedra->GetOutputPort());
-  {
-    // Coplanar corners (each hull face has several) make some tetrahedra degenerate, and VTK warns of it; what
-    // matters is the surface, which is checked below.
-    const VtkWarningsCheckedHere checked;
-    surface->Update();
+  vtkSmartPointer<vtkPolyData> envelope;
+  try {
+    envelope = closed_surface(*hull->GetOutput()->GetPoints());
+  } catch (const FlatPointSet& flat) {  // leaf balls have a radius, so their extremes always span a volume
+    spdlog::warn("VTK output, age {}: tree '{}' has no crown envelope ({})", stand_age, tree.label, flat.what());
+    return nullptr;
   }
-  vtkSmartPointer<vtkPolyData> envelope = surface->GetOutput();
   if (const vtkIdType open = open_edges(*envelope); open > 0)
     spdlog::warn("VTK output, age {}: the crown envelope of tree '{}' is not a closed surface ({} open edges)",
                  stand_age, tree.label, open);
-  envelope->GetPointData()->Initialize();
   envelope->GetPointData()->AddArray(light_at_corners(tree, *envelope));
   return envelope;
 }

@@ -14,7 +14,8 @@ namespace heliostand {
 vtkSmartPointer<vtkPolyData> build_stem_block(const StandSnapshot& snapshot);
 
 // One closed convex surface per tree around its foliage: the hull of its leaf balls (each ball's six extreme
-// points), from VTK's vtkHull with 66 plane directions. Point data: light (at each corner the nearest leaf ball's).
+// points), from VTK's vtkHull with 66 plane directions, triangulated by Qhull (geometry/convex_hull.hpp) with every
+// triangle facing out. Point data: light (at each corner the nearest leaf ball's).
 // Each envelope is checked to be closed; the log warns of one that is not, naming its tree.
 // Cell data: the tree attributes.
 // A tree gone since the previous output year gets the envelope of the crown it had (TreeSnapshot::crown_when_gone).

@@ -9,11 +9,8 @@
 namespace heliostand {
 namespace {
 
-thread_local int checked_scopes = 0;  // VtkWarningsCheckedHere alive on this thread
-
 spdlog::level::level_enum level_of(vtkLogger::Verbosity verbosity) {
-  if (verbosity <= vtkLogger::VERBOSITY_ERROR) return spdlog::level::err;
-  return checked_scopes > 0 ? spdlog::level::debug : spdlog::level::warn;
+  return verbosity <= vtkLogger::VERBOSITY_ERROR ? spdlog::level::err : spdlog::level::warn;
 }
 
 // One message: its first line at its level, with the VTK source file and line it came from; the rest (a pipeline
@@ -35,8 +32,5 @@ void log_vtk_messages() {
   vtkLogger::RemoveCallback(callback_id);  // a second call replaces the first, so each message is logged once
   vtkLogger::AddCallback(callback_id, &log_message, nullptr, vtkLogger::VERBOSITY_WARNING);
 }
-
-VtkWarningsCheckedHere::VtkWarningsCheckedHere() { ++checked_scopes; }
-VtkWarningsCheckedHere::~VtkWarningsCheckedHere() { --checked_scopes; }
 
 }  // namespace heliostand

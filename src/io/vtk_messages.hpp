@@ -1,7 +1,7 @@
 #pragma once
 // VTK's own warnings and errors in heliostand's log. VTK 9.1 prints them to stderr through its own logger, one
 // coloured, time-stamped line each, whatever -q or -v say; routed here they are log lines like any other
-// ("warning: VTK (vtkDelaunay3D.cxx:521): ..."), at the level the command line chose.
+// ("warning: VTK (<source>.cxx:<line>): ..."), at the level the command line chose.
 
 namespace heliostand {
 
@@ -9,17 +9,5 @@ namespace heliostand {
 // warnings as warnings, the lines after a message's first as debug) and VTK prints nothing itself. Called once
 // the log is set up (cli/app.cpp); calling it again changes nothing.
 void log_vtk_messages();
-
-// While one lives, the VTK warnings raised on its thread are logged at debug level, not as warnings: for a step
-// that checks VTK's result itself and says so when it is wrong, so that a warning about an intermediate (a
-// degenerate tetrahedron on the way to a crown envelope that comes out closed) does not alarm the user.
-// Errors stay errors.
-class VtkWarningsCheckedHere {
- public:
-  VtkWarningsCheckedHere();
-  ~VtkWarningsCheckedHere();
-  VtkWarningsCheckedHere(const VtkWarningsCheckedHere&) = delete;
-  VtkWarningsCheckedHere& operator=(const VtkWarningsCheckedHere&) = delete;
-};
 
 }  // namespace heliostand

@@ -14,6 +14,8 @@
 #include <set>
 #include <sstream>
 
+#include <glm/geometric.hpp>
+
 #include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
@@ -152,25 +154,51 @@ TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {
   EXPECT_GT(tree_cells_of(*block, stand_.snapshot.trees[0].id)->GetNumberOfCells(), 0);
 }
 
-// Seven leaf balls on a quarter-metre grid, found by trying: vtkDelaunay3D meets a degenerate tetrahedron among
-// their hull's corners and warns "1 degenerate triangles encountered, mesh quality suspect", as it does for a few
-// crowns of the example stand. The envelope comes out closed all the same, so the warning is a debug line of the
-// log, not one that asks the user to worry, and the check that would warn (the envelope not closed) stays silent.
-TEST_F(LevelsOfDetail, AnEnvelopeVtkWarnsAboutIsClosedAndItsWarningIsOnlyADebugLine) {
+// Six leaf balls of tree P0508 of the hectare benchmark (validation/bench/stands/planted_2500.csv) at age 20, where
+// they stand, to the last bit: the fewest of its 224 balls (removed one at a time while it lasted) whose hull corners
+// vtkDelaunay3D, which built the envelopes before Qhull, turned into a surface with 4 open edges (8 for all 224). Two
+// pairs of whorl balls at one height put corners nearly on one sphere. Moved elsewhere, the same crown came out
+// closed: the failure depends on the coordinates' last bits, so the case is kept exactly as it was found.
+TEST_F(LevelsOfDetail, TheEnvelopeOfACrownThatDelaunayLeftOpenIsClosed) {
   TreeSnapshot& tree = stand_.snapshot.trees[0];
-  tree.leaf_balls.clear();
-  for (const glm::dvec3 centre :
-       {glm::dvec3(-0.75, -0.5, -1.25), glm::dvec3(-1, -0.25, 1.25), glm::dvec3(-0.5, 0.25, 0.5),
-        glm::dvec3(-0.75, -0.5, -0.25), glm::dvec3(0.75, -0.75, 0), glm::dvec3(-0.75, 0, -1.5),
-        glm::dvec3(-0.5, 0.75, 1.75)})
-    tree.leaf_balls.push_back({centre, 0.25});
+  tree.label = "P0508";
+  tree.leaf_balls = {{{14.107662224025152, 21.167059379668299, 3.6457628902678607}, 0.19048268241177505},
+                     {{14.84, 20.870000000000001, 10.5}, 0.59999999999999998},
+                     {{15.955488884599101, 20.707406094855013, 3.7995013081778053}, 0.18250361189179987},
+                     {{13.795390940655754, 21.293726495265961, 3.7995013081778053}, 0.18250361189180017},
+                     {{15.183505312692034, 21.646100243492384, 6.1220915204574631}, 0.2114354424369462},
+                     {{15.124624057580993, 20.070427218045332, 6.1220915204574657}, 0.21143544243694856}};
   tree.leaf_ball_light.assign(tree.leaf_balls.size(), 0.5);
   stand_.snapshot.trees.resize(1);
   const testing::CapturedLog log;
   vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  ASSERT_GT(block->GetNumberOfCells(), 20);
   EXPECT_EQ(open_edges(*block), 0);
-  EXPECT_THAT(log.text(), HasSubstr("debug: VTK (vtkDelaunay3D.cxx:")) << "the case no longer makes VTK warn";
-  EXPECT_THAT(log.text(), Not(HasSubstr("warning:")));
+  EXPECT_THAT(log.text(), Not(HasSubstr("P0508")));
+  EXPECT_THAT(log.text(), Not(HasSubstr("VTK")));
+}
+
+// Every triangle of an envelope faces out of its crown (geometry/convex_hull.hpp turns them so), so ParaView lights
+// the outside of the surface and a Normals filter needs no flipping.
+TEST_F(LevelsOfDetail, EveryEnvelopeTriangleFacesOutOfItsCrown) {
+  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+  vtkDataArray* ids = block->GetCellData()->GetArray("tree_id");
+  ASSERT_NE(ids, nullptr);
+  std::map<int, glm::dvec3> crown_centre;
+  for (const TreeSnapshot& tree : stand_.snapshot.trees) {
+    glm::dvec3 sum(0);
+    for (const LeafBall& ball : tree.leaf_balls) sum += ball.centre;
+    crown_centre[tree.id] = sum / static_cast<double>(tree.leaf_balls.size());
+  }
+  ASSERT_GT(block->GetNumberOfCells(), 0);
+  for (vtkIdType c = 0; c < block->GetNumberOfCells(); ++c) {
+    vtkIdList* corners = block->GetCell(c)->GetPointIds();
+    ASSERT_EQ(corners->GetNumberOfIds(), 3);
+    glm::dvec3 p[3];
+    for (int k = 0; k < 3; ++k) block->GetPoint(corners->GetId(k), &p[k].x);
+    const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
+    EXPECT_GT(glm::dot(normal, p[0] - crown_centre.at(static_cast<int>(ids->GetTuple1(c)))), 0.0) << "cell " << c;
+  }
 }
 
 // The crowns' pieces are made on the worker threads (io/vtk_crown_blocks.cpp, append_per_tree) and appended in the

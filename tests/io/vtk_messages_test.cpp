@@ -39,18 +39,5 @@ TEST_F(VtkMessages, AnErrorIsALogErrorAndItsFurtherLinesAreDebug) {
                          "debug: VTK, continued:   Request: REQUEST_DATA\n");
 }
 
-TEST_F(VtkMessages, AWarningInAStepThatChecksItsResultIsDebugUntilTheStepEnds) {
-  const int line = __LINE__ + 3;
-  {
-    const VtkWarningsCheckedHere checked;
-    vtkGenericWarningMacro("1 degenerate triangles encountered");
-    vtkErrorWithObjectMacro(nullptr, "an error is still an error");
-  }
-  vtkGenericWarningMacro("after the step");
-  EXPECT_EQ(log_.text(), "debug: VTK " + vtk_source(line) + ": 1 degenerate triangles encountered\n"
-                         "error: VTK " + vtk_source(line + 1) + ": (nullptr): an error is still an error\n"
-                         "warning: VTK " + vtk_source(line + 3) + ": after the step\n");
-}
-
 }  // namespace
 }  // namespace heliostand
