@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 #include <string>
 #include <utility>
 
@@ -61,6 +60,7 @@ glm::dvec3 vec3(const coordT* p) { return {p[0], p[1], p[2]}; }
 }  // namespace
 
 ConvexHull convex_hull(std::span<const glm::dvec3> points) {
+  if (points.size() < 4) throw FlatPointSet("fewer than four points span no volume");
   std::vector<coordT> coordinates;
   coordinates.reserve(3 * points.size());
   for (const glm::dvec3& p : points) coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
@@ -70,11 +70,9 @@ ConvexHull convex_hull(std::span<const glm::dvec3> points) {
   qhT* qh = run.qh();
   // Qt: faces of more than three corners (merged where points are coplanar within rounding) come out as triangles.
   char options[] = "qhull Qt";
-  if (points.size() < 4 ||
-      qh_new_qhull(qh, 3, static_cast<int>(points.size()), coordinates.data(), False, options, nullptr,
+  if (qh_new_qhull(qh, 3, static_cast<int>(points.size()), coordinates.data(), False, options, nullptr,
                    errors.file()) != 0)
-    throw FlatPointSet(points.size() < 4 ? "fewer than four points span no volume"
-                                         : "Qhull found no hull: " + errors.text());
+    throw FlatPointSet("Qhull found no hull: " + errors.text());
 
   // The corners in input order, renumbered from 0.
   std::vector<int> corner_of(points.size(), -1);
