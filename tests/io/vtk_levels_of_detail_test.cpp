@@ -3,7 +3,6 @@
 // per-tree attributes are on every cell, that the sizes written are stated, and that roots can skip years.
 #include "io/vtk_time_series_writer.hpp"
 
-#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -13,6 +12,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -40,8 +42,6 @@
 namespace heliostand {
 namespace {
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
-using ::testing::Not;
 
 std::vector<std::string> block_names(const fs::path& vtm) {
   const vtkSmartPointer<vtkMultiBlockDataSet> multiblock = testing::read_multiblock(vtm);
@@ -82,6 +82,21 @@ class LevelsOfDetail : public ::testing::Test {
   testing::TempFolder tmp_;
   OutputFolder folder_;
   testing::SyntheticStand stand_ = testing::make_synthetic_stand(16, 0);  // trees of 9, 8 and 7 m
+
+  // The envelope block of the first tree alone, its leaf balls replaced by `balls`, and what the log said meanwhile.
+  struct LoneEnvelope {
+    vtkSmartPointer<vtkPolyData> block;
+    std::string log;
+  };
+  LoneEnvelope lone_envelope(std::vector<LeafBall> balls) {
+    stand_.snapshot.trees.resize(1);
+    TreeSnapshot& tree = stand_.snapshot.trees[0];
+    tree.leaf_balls = std::move(balls);
+    tree.leaf_ball_light.assign(tree.leaf_balls.size(), 0.5);
+    const testing::CapturedLog log;
+    vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
+    return {block, log.text()};
+  }
 };
 
 TEST_F(LevelsOfDetail, EachLevelWritesItsBlocks) {
@@ -160,22 +175,17 @@ TEST_F(LevelsOfDetail, ATreeWithoutLeafBallsHasNoEnvelope) {
 // pairs of whorl balls at one height put corners nearly on one sphere. Moved elsewhere, the same crown came out
 // closed: the failure depends on the coordinates' last bits, so the case is kept exactly as it was found.
 TEST_F(LevelsOfDetail, TheEnvelopeOfACrownThatDelaunayLeftOpenIsClosed) {
-  TreeSnapshot& tree = stand_.snapshot.trees[0];
-  tree.label = "P0508";
-  tree.leaf_balls = {{{14.107662224025152, 21.167059379668299, 3.6457628902678607}, 0.19048268241177505},
+  stand_.snapshot.trees[0].label = "P0508";
+  const LoneEnvelope envelope =
+      lone_envelope({{{14.107662224025152, 21.167059379668299, 3.6457628902678607}, 0.19048268241177505},
                      {{14.84, 20.870000000000001, 10.5}, 0.59999999999999998},
                      {{15.955488884599101, 20.707406094855013, 3.7995013081778053}, 0.18250361189179987},
                      {{13.795390940655754, 21.293726495265961, 3.7995013081778053}, 0.18250361189180017},
                      {{15.183505312692034, 21.646100243492384, 6.1220915204574631}, 0.2114354424369462},
-                     {{15.124624057580993, 20.070427218045332, 6.1220915204574657}, 0.21143544243694856}};
-  tree.leaf_ball_light.assign(tree.leaf_balls.size(), 0.5);
-  stand_.snapshot.trees.resize(1);
-  const testing::CapturedLog log;
-  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
-  ASSERT_GT(block->GetNumberOfCells(), 20);
-  EXPECT_EQ(open_edges(*block), 0);
-  EXPECT_THAT(log.text(), Not(HasSubstr("P0508")));
-  EXPECT_THAT(log.text(), Not(HasSubstr("VTK")));
+                     {{15.124624057580993, 20.070427218045332, 6.1220915204574657}, 0.21143544243694856}});
+  ASSERT_GT(envelope.block->GetNumberOfCells(), 20);
+  EXPECT_EQ(open_edges(*envelope.block), 0);
+  EXPECT_EQ(envelope.log, "");  // with vtkDelaunay3D: "warning: … tree 'P0508' is not a closed surface (4 open edges)"
 }
 
 // Seven leaf balls on a quarter-metre grid, found by trying when vtkDelaunay3D built the envelopes: their hull's
@@ -183,20 +193,16 @@ TEST_F(LevelsOfDetail, TheEnvelopeOfACrownThatDelaunayLeftOpenIsClosed) {
 // triangles encountered, mesh quality suspect"), as it did for a few crowns of the example stand. Qhull merges the
 // coplanar corners into faces and splits those into triangles: the envelope is closed and the log is silent.
 TEST_F(LevelsOfDetail, TheEnvelopeOfCoplanarCornersIsClosedAndQuiet) {
-  TreeSnapshot& tree = stand_.snapshot.trees[0];
-  tree.leaf_balls.clear();
+  std::vector<LeafBall> balls;
   for (const glm::dvec3 centre :
        {glm::dvec3(-0.75, -0.5, -1.25), glm::dvec3(-1, -0.25, 1.25), glm::dvec3(-0.5, 0.25, 0.5),
         glm::dvec3(-0.75, -0.5, -0.25), glm::dvec3(0.75, -0.75, 0), glm::dvec3(-0.75, 0, -1.5),
         glm::dvec3(-0.5, 0.75, 1.75)})
-    tree.leaf_balls.push_back({centre, 0.25});
-  tree.leaf_ball_light.assign(tree.leaf_balls.size(), 0.5);
-  stand_.snapshot.trees.resize(1);
-  const testing::CapturedLog log;
-  vtkSmartPointer<vtkPolyData> block = build_crown_envelope_block(stand_.snapshot);
-  ASSERT_GT(block->GetNumberOfCells(), 20);
-  EXPECT_EQ(open_edges(*block), 0);
-  EXPECT_EQ(log.text(), "");
+    balls.push_back({centre, 0.25});
+  const LoneEnvelope envelope = lone_envelope(balls);
+  ASSERT_GT(envelope.block->GetNumberOfCells(), 20);
+  EXPECT_EQ(open_edges(*envelope.block), 0);
+  EXPECT_EQ(envelope.log, "");
 }
 
 // Every triangle of an envelope faces out of its crown (geometry/convex_hull.hpp turns them so), so ParaView lights
