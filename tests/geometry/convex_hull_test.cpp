@@ -1,15 +1,13 @@
-// geometry/convex_hull.hpp: the hull is closed (every edge on exactly two triangles, met in opposite directions),
+// geometry/convex_hull.hpp: the hull is closed (every edge on exactly two triangles, run in opposite directions),
 // its triangles face outwards, its corners are the extreme points only, and flat input is refused.
 #include "geometry/convex_hull.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <map>
-#include <utility>
-
 #include <glm/geometric.hpp>
 
+#include "hollow/mesh_checks.hpp"
 #include "rng/random_stream.hpp"
 
 namespace heliostand {
@@ -17,21 +15,13 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// How many times each directed edge a → b is walked by the triangles (counter-clockwise from outside).
-std::map<std::pair<int, int>, int> directed_edges(const ConvexHull& hull) {
-  std::map<std::pair<int, int>, int> edges;
-  for (const auto& t : hull.triangles)
-    for (int k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
-  return edges;
-}
-
-// Closed and consistently turned: each directed edge is walked once, and its reverse once.
+// Closed and consistently turned (hollow/mesh_checks.hpp): every edge on exactly two triangles, which run it in
+// opposite directions.
 void expect_closed_and_consistent(const ConvexHull& hull) {
-  const auto edges = directed_edges(hull);
-  for (const auto& [edge, count] : edges) {
-    EXPECT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
-    EXPECT_EQ(edges.count({edge.second, edge.first}), 1u) << "edge " << edge.first << "-" << edge.second << " is open";
-  }
+  const hollow::ManifoldReport edges = hollow::check_manifold(hull.corners, hull.triangles);
+  EXPECT_EQ(edges.boundary_edges, 0);
+  EXPECT_EQ(edges.non_manifold_edges, 0);
+  EXPECT_EQ(edges.inconsistent_edges, 0);
   // Euler's formula for a closed triangulated sphere.
   EXPECT_EQ(hull.triangles.size(), 2 * hull.corners.size() - 4);
 }
