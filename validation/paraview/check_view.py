@@ -8,7 +8,10 @@ the picture: not blank, several colours), and checks against trees.csv and the y
   `crown_envelope` when `branches` is drawn, `leaf_balls` when `foliage` is), and each is visible;
 - each drawn block shows the year asked for (the data its display rendered carries that time);
 - the trees the drawn blocks show (distinct `tree_id`) are the trees trees.csv lists at that age: the stem or
-  branches of every one of them, the foliage of every living tree with leaf balls, and nothing of another tree.
+  branches of every one of them, the foliage of every living tree with leaf balls, and nothing of another tree;
+- the legend of each block coloured by a data array names that array: its title is the array's name, alone or
+  followed by a gloss in brackets ("light (of the open sky)"), so that a legend cannot name one quantity while the
+  colours show another.
 Exit status 1 with a message when something is missing.
 """
 import csv
@@ -20,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import heliostand_view  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import Delete, GetDisplayProperties  # noqa: E402
+from paraview.simple import Delete, GetColorTransferFunction, GetDisplayProperties, GetScalarBar  # noqa: E402
 
 NOT_DRAWN = {"trees", "soil"}
 WOOD = {"branches", "stem"}        # every tree of the year
@@ -71,7 +74,20 @@ def drawn_age(display):
     return information.GetTime() if information.GetHasTime() else None
 
 
-def problems_of(pvd, trees_csv, shown, age):
+def legend_problem(name, display, view):
+    """A message when the block is coloured by an array whose legend is missing or names something else."""
+    association, array = display.ColorArrayName
+    if not array:
+        return None  # one solid colour: no legend
+    if not display.IsScalarBarVisible(view):
+        return "block %s is coloured by %s %s without its legend" % (name, association.lower(), array)
+    title = GetScalarBar(GetColorTransferFunction(array), view).Title
+    if title.split(" (")[0] != array:
+        return "block %s is coloured by %s but its legend is titled %r" % (name, array, title)
+    return None
+
+
+def problems_of(pvd, trees_csv, shown, age, view):
     expected = blocks_in_year(pvd, age) - NOT_DRAWN
     if "branches" in expected:
         expected.discard("crown_envelope")
@@ -87,6 +103,9 @@ def problems_of(pvd, trees_csv, shown, age):
         display = GetDisplayProperties(source)
         if not display.Visibility:
             problems.append("block %s is hidden" % name)
+        legend = legend_problem(name, display, view)
+        if legend:
+            problems.append(legend)
         drawn_at = drawn_age(display)
         if drawn_at is None or abs(drawn_at - age) > 1e-6:
             problems.append("block %s is drawn at stand age %s, not %g" % (name, drawn_at, age))
@@ -112,7 +131,7 @@ def main(argv):
     pvd, trees_csv, png = argv[1:4]
     age = float(argv[4]) if len(argv) == 5 else None
     view, shown, age = heliostand_view.picture(pvd, png, age)
-    problems = problems_of(pvd, trees_csv, shown, age)
+    problems = problems_of(pvd, trees_csv, shown, age, view)
     print(png)
     Delete(view)  # release the render window while the X display still exists (see render_stand.py)
     for problem in problems:

@@ -21,6 +21,10 @@ SKY = [0.86, 0.91, 0.97]
 INK = [0.1, 0.1, 0.1]
 ROOT = [0.78, 0.62, 0.42]
 LIGHT_PRESET = "Viridis (matplotlib)"
+# The legend names the array it colours by: `light`, the share of the open sky's light a leaf ball receives, its own
+# crown's shade included (docs/formats.md). Not the growth rules' `relative_light` (stand / the tree alone), which
+# is near 1 at the top of a dominant's crown where `light` may read 0.2.
+LIGHT_TITLE = "light (of the open sky)"
 ROOT_LINE_PIXELS = 2.0
 
 
@@ -47,10 +51,10 @@ def colour_by_light(display, association, view):
     light = GetColorTransferFunction("light")
     light.ApplyPreset(LIGHT_PRESET, True)
     light.AutomaticRescaleRangeMode = "Never"  # ParaView would otherwise stretch it to each year's values
-    light.RescaleTransferFunction(0.0, 1.0)  # relative light: a fixed scale keeps blocks and years comparable
+    light.RescaleTransferFunction(0.0, 1.0)  # a fixed scale keeps blocks and years comparable
     display.SetScalarBarVisibility(view, True)
     bar = GetScalarBar(light, view)
-    bar.Title = "relative light"
+    bar.Title = LIGHT_TITLE
     bar.ComponentTitle = ""
     bar.TitleColor = INK
     bar.LabelColor = INK
