@@ -68,6 +68,8 @@ def row(run):
         "leaf_balls": run["leaf_balls_at_end"],
         "root_segments": run["root_segments_at_end"],
         "seconds": run["total_seconds"],
+        "light_seconds": light,
+        "roots_seconds": run["stage_seconds"].get("roots", 0.0),
         "light_share": light / run["total_seconds"] if run["total_seconds"] > 0 else 0.0,
         "ms_per_tree_year": 1000.0 * run["total_seconds"] / tree_years,
         "peak_mib": peak_mib,
@@ -79,12 +81,13 @@ def row(run):
 
 def table(label, rows):
     lines = [f"**{label}**", "",
-             "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light | ms / tree-year "
-             "| peak MiB | MiB / tree | KiB / tree-year | held at end MiB | KiB held / tree |",
-             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light s | roots s | light "
+             "| ms / tree-year | peak MiB | MiB / tree | KiB / tree-year | held at end MiB | KiB held / tree |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r['trees']:,} | {r['tree_years']:,} | {r['leaf_balls']:,} | {r['root_segments']:,} "
-                     f"| {r['seconds']:.1f} | {100 * r['light_share']:.0f} % | {r['ms_per_tree_year']:.0f} "
+                     f"| {r['seconds']:.1f} | {r['light_seconds']:.1f} | {r['roots_seconds']:.1f} "
+                     f"| {100 * r['light_share']:.0f} % | {r['ms_per_tree_year']:.0f} "
                      f"| {r['peak_mib']:.0f} | {r['mib_per_tree']:.2f} | {r['kib_per_tree_year']:.0f} "
                      f"| {r['held_mib']:.0f} | {1024 * r['held_mib'] / max(1, r['trees']):.0f} |")
     lines += ["", marginal_memory(rows), ""]
@@ -111,11 +114,18 @@ def marginal_memory(rows):
             f"{slope(trees, held) / 1024:.0f} KiB per tree.")
 
 
+def ratio(b, a):
+    """b / a to two places, or a dash where a is zero (a stage the first binary did not time)."""
+    return f"{b / a:.2f}" if a > 0 else "–"
+
+
 def ratio_table(labels, rows_a, rows_b):
     lines = [f"**{labels[1]} / {labels[0]}** (same stands, run alternately)", "",
-             "| trees | wall time | light share | peak memory | held at end |", "|---:|---:|---:|---:|---:|"]
+             "| trees | wall time | light | roots | light share | peak memory | held at end |",
+             "|---:|---:|---:|---:|---:|---:|---:|"]
     for a, b in zip(rows_a, rows_b):
         lines.append(f"| {a['trees']:,} | {b['seconds'] / a['seconds']:.2f} | "
+                     f"{ratio(b['light_seconds'], a['light_seconds'])} | {ratio(b['roots_seconds'], a['roots_seconds'])} | "
                      f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {b['peak_mib'] / a['peak_mib']:.2f} "
                      f"| {b['held_mib'] / a['held_mib']:.2f} |")
     return lines + [""]
