@@ -81,7 +81,7 @@ def row(run):
 
 def table(label, rows):
     lines = [f"**{label}**", "",
-             "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light s | roots s | light "
+             "| trees | tree-years | leaf balls (end) | root segments (end) | wall s | light s | roots s | light share "
              "| ms / tree-year | peak MiB | MiB / tree | KiB / tree-year | held at end MiB | KiB held / tree |",
              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
