@@ -115,7 +115,7 @@ def marginal_memory(rows):
 
 
 def ratio(b, a):
-    """b / a to two places, or a dash where a is zero (a stage the first binary did not time)."""
+    """b / a to two places, or a dash where a is zero (a stage the first binary did not time, or skipped)."""
     return f"{b / a:.2f}" if a > 0 else "–"
 
 
@@ -124,10 +124,10 @@ def ratio_table(labels, rows_a, rows_b):
              "| trees | wall time | light | roots | light share | peak memory | held at end |",
              "|---:|---:|---:|---:|---:|---:|---:|"]
     for a, b in zip(rows_a, rows_b):
-        lines.append(f"| {a['trees']:,} | {b['seconds'] / a['seconds']:.2f} | "
-                     f"{ratio(b['light_seconds'], a['light_seconds'])} | {ratio(b['roots_seconds'], a['roots_seconds'])} | "
-                     f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {b['peak_mib'] / a['peak_mib']:.2f} "
-                     f"| {b['held_mib'] / a['held_mib']:.2f} |")
+        wall, light, roots, peak, held = (ratio(b[key], a[key]) for key in
+                                          ("seconds", "light_seconds", "roots_seconds", "peak_mib", "held_mib"))
+        lines.append(f"| {a['trees']:,} | {wall} | {light} | {roots} | "
+                     f"{100 * a['light_share']:.0f} % → {100 * b['light_share']:.0f} % | {peak} | {held} |")
     return lines + [""]
 
 
