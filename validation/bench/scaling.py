@@ -140,23 +140,24 @@ def main():
     arguments.out.mkdir(parents=True, exist_ok=True)
     started = time.strftime("%Y-%m-%d %H:%M %Z")
     loads = [load_average()]
-    runs = {binary: [] for binary in binaries}
+    # By position, not by path: the same binary given twice (to see the machine's noise) keeps two sets of runs.
+    runs = [[] for _ in binaries]
     for scenario in stands:
         for number, binary in enumerate(binaries):
             json_path = arguments.out / f"{scenario.stem}.{number}.json"
-            runs[binary].append(bench(binary, scenario, arguments.years, arguments.device, json_path))
+            runs[number].append(bench(binary, scenario, arguments.years, arguments.device, json_path))
             loads.append(load_average())
-    rows = {binary: [row(run) for run in runs[binary]] for binary in binaries}
+    rows = [[row(run) for run in binary_runs] for binary_runs in runs]
 
-    device = runs[binaries[0]][0]["device"]
+    device = runs[0][0]["device"]
     lines = [f"Stand scaling, {arguments.years} years per stand, started {started}.", "",
              f"Machine: {machine_line()}; device {device}.",
              f"Load average (1, 5, 15 min) before and after each run: {'; '.join(loads)}.", "",
              "Command: `" + " ".join([sys.argv[0]] + sys.argv[1:]) + "`", ""]
-    for binary in binaries:
-        lines += table(str(binary), rows[binary])
+    for binary, binary_rows in zip(binaries, rows):
+        lines += table(str(binary), binary_rows)
     if len(binaries) == 2:
-        lines += ratio_table([str(b) for b in binaries], rows[binaries[0]], rows[binaries[1]])
+        lines += ratio_table([str(b) for b in binaries], rows[0], rows[1])
     text = "\n".join(lines)
     (arguments.out / "scaling.md").write_text(text)
     print(text)
