@@ -36,3 +36,16 @@ add_test(NAME bench.scaling_table_same_binary_twice
                  ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR} $<TARGET_FILE:heliostand> ${PROJECT_BINARY_DIR}/test-output/bench-scaling-twice)
 set_tests_properties(bench.scaling_table_same_binary_twice PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+# The GPU machine's bundle (validation/bench/gpu): packed from this build with a second copy of heliostand as
+# another "commit", it must load every library from itself (pack.sh checks the loader's trace and fails if not), and
+# checks.sh must run each part on it with small sizes and exit 0, the two binaries side by side: their tiny stands'
+# tables the same bytes and a ratio line for each figure.
+add_test(NAME bench.gpu_bundle
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0
+                 "-DEXPECT_OUTPUT=PASSED  \\] [1-9].*stand table of again: the same bytes as main's.*main / again, hectare: [0-9.]+.*main / again, light of 2000 balls \\(medians\\): [0-9.]+"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 sh -c "rm -rf \"$1\" \"$2\" && \"$0/gpu/pack.sh\" \"$3\" \"$1\" again=\"$4\" && BALLS=2000 LIGHT_RUNS=1 HECTARE=\"$0/stands/tiny.toml\" WARM_UP=\"$0/stands/tiny.toml\" TEST_FILTER='KernelOptions.*' \"$0/gpu/checks.sh\" \"$1\" \"$2\""
+                 ${BENCH_DIR} ${PROJECT_BINARY_DIR}/test-output/gpu-bundle ${PROJECT_BINARY_DIR}/test-output/gpu-checks
+                 ${PROJECT_BINARY_DIR} $<TARGET_FILE:heliostand>)
+set_tests_properties(bench.gpu_bundle PROPERTIES LABELS "bench" TIMEOUT 300 WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+                     ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
