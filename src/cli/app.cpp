@@ -1,28 +1,21 @@
 #include "cli/app.hpp"
 
 #include <CLI/CLI.hpp>
-#include <spdlog/sinks/stdout_color_sinks.h>
-#include <spdlog/spdlog.h>
+#include <spdlog/common.h>
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
 #include "cli/devices_command.hpp"
 #include "cli/number_checks.hpp"
 #include "core/parallel_for.hpp"
-#include "io/vtk_messages.hpp"
+#include "io/log_setup.hpp"
 
 namespace heliostand::cli {
 namespace {
 
-// Logs go to stderr, so stdout stays clean for machine-readable output (bench JSON, check summary).
+// -q shows warnings and errors, -v debug lines too.
 void set_up_logging(int verbosity) {
-  auto logger = spdlog::stderr_color_mt("heliostand");
-  logger->set_pattern("%^%l%$: %v");
-  logger->set_level(verbosity < 0 ? spdlog::level::warn
-                    : verbosity == 0 ? spdlog::level::info
-                                     : spdlog::level::debug);
-  spdlog::set_default_logger(logger);
-  log_vtk_messages();
+  log_to_stderr(verbosity < 0 ? spdlog::level::warn : verbosity == 0 ? spdlog::level::info : spdlog::level::debug);
 }
 
 std::string command_line;

@@ -7,7 +7,7 @@ namespace heliostand {
 
 // From now on, every VTK warning and error of the process goes to spdlog's default logger (errors as errors,
 // warnings as warnings, the lines after a message's first as debug) and VTK prints nothing itself. Called once
-// the log is set up (cli/app.cpp); calling it again changes nothing.
+// the log is set up (io/log_setup.hpp, which calls it); calling it again changes nothing.
 void log_vtk_messages();
 
 }  // namespace heliostand

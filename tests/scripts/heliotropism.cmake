@@ -54,6 +54,18 @@ add_test(NAME validation.heliotropism.unwritable_report
                  "-DEXPECT_OUTPUT=cannot write [^ ]*/heliotropism_metrics.md: Is a directory" -P ${HELIOSTAND_EXPECT}
                  $<TARGET_FILE:heliotropism_validation> validate ${HELIOSTAND_UNWRITABLE_FINDINGS} --only 10 --seeds 1)
 set_tests_properties(validation.heliotropism.unwritable_report PROPERTIES TIMEOUT 300 LABELS "validation")
+# A crown file that cannot be written whole (files may not grow past 4 KiB: `ulimit -f 4`, SIGXFSZ ignored, as on a
+# full disk): exit status 1 naming the file and the reason, VTK's own error as one log line ("error: VTK (...)"),
+# not VTK's coloured, time-stamped dump of the pipeline request (the "ERR|" lines and "Modified Time" of its format).
+add_test(NAME validation.heliotropism.full_disk
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1
+                 "-DEXPECT_OUTPUT=error: VTK \\(vtk[A-Za-z]+\\.cxx:[0-9]+\\): .*vtkXMLPolyDataWriter.*error: cannot write [^ ]*/crown_gen_[0-9]+\\.vtp: File too large"
+                 -P ${HELIOSTAND_EXPECT}
+                 bash -c "trap '' XFSZ && ulimit -f 4 && exec \"$0\" run \"$1\" \"$2\""
+                 $<TARGET_FILE:heliotropism_validation> ${PROJECT_SOURCE_DIR}/stands/kanamaru-ci/scenario.toml
+                 ${PROJECT_BINARY_DIR}/validation/heliotropism/kanamaru-full-disk)
+set_tests_properties(validation.heliotropism.full_disk PROPERTIES TIMEOUT 300 LABELS "validation"
+                     FAIL_REGULAR_EXPRESSION "ERR\\||Modified Time")
 # Figs. 16-17 on the conifer (validation/heliotropism/conifer_findings_validation.cpp; GoogleTest, each TEST a CTest).
 add_executable(heliostand_conifer_findings ${PROJECT_SOURCE_DIR}/validation/heliotropism/conifer_findings_validation.cpp)
 target_include_directories(heliostand_conifer_findings PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)

@@ -30,6 +30,7 @@
 #include "crown_shape.hpp"
 #include "experiments/kanamaru/kanamaru_scenario.hpp"
 #include "io/dichotomy_tree_vtk.hpp"
+#include "io/log_setup.hpp"
 #include "io/output_folder.hpp"
 
 using namespace heliostand;
@@ -594,6 +595,7 @@ int validate(const std::string& out, bool full, const std::string& only, int see
 }  // namespace
 
 int main(int argc, char** argv) {
+  heliostand::log_to_stderr(spdlog::level::info);  // VTK's errors as log lines, as heliostand prints them
   if (argc >= 3 && std::strcmp(argv[1], "validate") == 0) {
     bool full = false;
     std::string only;
