@@ -22,10 +22,12 @@ fi
 mkdir -p "$bundle/libs"
 
 binaries="$build/heliostand"
+programs="heliostand"
 cp "$build/heliostand" "$bundle/heliostand"
 if [ -x "$build/tests/heliostand_tests" ]; then
   cp "$build/tests/heliostand_tests" "$bundle/heliostand_tests"
   binaries="$binaries $build/tests/heliostand_tests"
+  programs="$programs heliostand_tests"
 fi
 for named in "$@"; do
   name=${named%%=*}; binary=${named#*=}
@@ -36,6 +38,7 @@ for named in "$@"; do
   [ -x "$binary" ] || { echo "error: $binary: no such program" >&2; exit 2; }
   mkdir -p "$bundle/$name" && cp "$binary" "$bundle/$name/heliostand"
   binaries="$binaries $binary"
+  programs="$programs $name/heliostand"
 done
 
 # Every library the binaries load (ldd resolves the whole tree), and the loader they name.
@@ -43,8 +46,9 @@ for binary in $binaries; do
   if ldd "$binary" | grep -q 'not found'; then
     echo "error: $binary: a library it needs is not found here:" >&2; ldd "$binary" | grep 'not found' >&2; exit 1
   fi
-  ldd "$binary" | awk '$2 == "=>" && $3 ~ /^\// { print $3 }'
-done | sort -u | while read -r library; do cp -L "$library" "$bundle/libs/"; done
+done
+for binary in $binaries; do ldd "$binary" | awk '$2 == "=>" && $3 ~ /^\// { print $3 }'; done |
+  sort -u | while read -r library; do cp -L "$library" "$bundle/libs/"; done
 loader=$(ldd "$build/heliostand" | awk '$1 ~ /^\/.*ld-linux/ { print $1 }')
 [ -n "$loader" ] || { echo "error: the dynamic loader of $build/heliostand not found by ldd" >&2; exit 1; }
 cp -L "$loader" "$bundle/libs/ld.so"
@@ -59,16 +63,19 @@ exec "$here/libs/ld.so" --library-path "$here/libs" "$here/$program" "$@"
 RUN
 chmod +x "$bundle/run"
 
-# The bundle stands alone only if the program loads every library from it: the loader's own trace of
-# `heliostand --version` names each library it initialises, from the packed loader to the program.
+# The bundle stands alone only if each program loads every library from it: the loader's own trace of a run that
+# does nothing (the version; the tests' list) names each library it initialises, from the packed loader on.
 libs=$(cd "$bundle/libs" && pwd)
-trace=$(LD_DEBUG=libs "$bundle/run" heliostand --version 2>&1 >/dev/null)
-outside=$(printf '%s\n' "$trace" | awk -v libs="$libs/" '
-  /calling init: / && $NF == libs "ld.so" { on = 1 }
-  on && /calling init: / { n++; if (index($NF, libs) != 1) print $NF }
-  on && /initialize program: / { exit }
-  END { if (n < 2) print "(no library initialised from the bundle)" }')
-if [ -n "$outside" ]; then
-  echo "error: $bundle: heliostand loads libraries from outside the bundle:" >&2; echo "$outside" >&2; exit 1
-fi
+for program in $programs; do
+  case $program in *_tests) idle=--gtest_list_tests;; *) idle=--version;; esac
+  trace=$(LD_DEBUG=libs "$bundle/run" "$program" "$idle" 2>&1 >/dev/null)
+  outside=$(printf '%s\n' "$trace" | awk -v libs="$libs/" '
+    /calling init: / && $NF == libs "ld.so" { on = 1 }
+    on && /calling init: / { n++; if (index($NF, libs) != 1) print $NF }
+    on && /initialize program: / { exit }
+    END { if (n < 2) print "(no library initialised from the bundle)" }')
+  if [ -n "$outside" ]; then
+    echo "error: $bundle: $program loads libraries from outside the bundle:" >&2; echo "$outside" >&2; exit 1
+  fi
+done
 echo "$bundle: $(find "$bundle/libs" -type f | wc -l) libraries, $(du -sh "$bundle" | cut -f1)"
