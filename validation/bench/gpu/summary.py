@@ -10,6 +10,7 @@ import json
 import os
 import re
 import sys
+from statistics import median
 
 
 def light_rows(folder):
@@ -45,9 +46,6 @@ def hectare_rows(folder):
 
 def ratios(light, hectare):
     """Each other binary's figures over main's (the medians of its runs)."""
-    def median(values):
-        values, half = sorted(values), len(values) // 2
-        return values[half] if len(values) % 2 else (values[half - 1] + values[half]) / 2
     lines = []
     for name in sorted(set(light) | set(hectare)):
         if name == "main":
