@@ -35,7 +35,7 @@ const fs::path run_folder = fs::path("runs") / "tiny" / "as-is" / "seed-7";
 // Starts the batch in a process group of its own, waits for the run's second checkpoint, and kills the batch and
 // its grow process with SIGKILL.
 void batch_and_kill(const std::string& arguments, const fs::path& checkpoint) {
-  const std::string command = "exec " + std::string(HELIOSTAND_EXECUTABLE) + " " + arguments;
+  const std::string command = "exec " + heliostand_command() + " " + arguments;
   const char* argv[] = {"sh", "-c", command.c_str(), nullptr};
   posix_spawnattr_t attributes;
   ::posix_spawnattr_init(&attributes);

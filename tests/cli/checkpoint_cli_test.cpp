@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 // Starts the grow command, waits for `checkpoint` to appear and then for `table` to grow past what it held then
 // (the next year has begun writing rows the checkpoint does not count), and kills the run with SIGKILL.
 void grow_and_kill(const std::string& grow_arguments, const fs::path& checkpoint, const fs::path& table) {
-  const std::string command = "exec " + std::string(HELIOSTAND_EXECUTABLE) + " " + grow_arguments + " -q";
+  const std::string command = "exec " + heliostand_command() + " " + grow_arguments + " -q";
   const char* argv[] = {"sh", "-c", command.c_str(), nullptr};
   pid_t pid = 0;
   ASSERT_EQ(::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);

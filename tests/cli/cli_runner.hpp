@@ -1,6 +1,7 @@
 #pragma once
 // Runs the heliostand executable the way a user does, capturing exit status and stderr.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -29,9 +30,15 @@ inline CliResult run_command(const std::string& command_line) {
   return result;
 }
 
-inline CliResult run_cli(const std::string& arguments) {
-  return run_command(std::string(HELIOSTAND_EXECUTABLE) + " " + arguments);
+// The command line that starts heliostand: this build's, or the one HELIOSTAND_TEST_EXECUTABLE names, so that the
+// command-line tests can run another copy of it (validation/bench/gpu/checks.sh runs a GPU machine's bundle's
+// heliostand through its packed loader: "'/path/bundle/run' heliostand"). A shell command, quoted as the shell reads it.
+inline std::string heliostand_command() {
+  const char* chosen = std::getenv("HELIOSTAND_TEST_EXECUTABLE");
+  return chosen != nullptr && *chosen != '\0' ? std::string(chosen) : std::string(HELIOSTAND_EXECUTABLE);
 }
+
+inline CliResult run_cli(const std::string& arguments) { return run_command(heliostand_command() + " " + arguments); }
 
 inline std::filesystem::path source_path(const std::string& relative) {
   return std::filesystem::path(HELIOSTAND_SOURCE_DIR) / relative;

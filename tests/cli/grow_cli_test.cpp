@@ -319,7 +319,7 @@ static void expect_refused_before_output(const std::string& folder_name, const s
 // rename with "cannot write OUT/.trees.csv.tmp" and no reason, losing the tables after the failed one.)
 TEST(GrowCli, ATableThatCannotBeWrittenStopsTheRunNamingItAndTheReason) {
   const auto folder = scratch_folder("tiny_full_disk");
-  const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 4; exec " + std::string(HELIOSTAND_EXECUTABLE) +
+  const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 4; exec " + heliostand_command() +
                                " -q grow " + tiny_scenario + " --device reference --no-vtk --out " + folder.string() + "\"");
   EXPECT_EQ(run.status, 2) << run.output;
   std::set<std::string> tables{"stand_table.csv", "trees.csv", "events.csv"};

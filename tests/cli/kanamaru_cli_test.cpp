@@ -59,7 +59,7 @@ TEST(KanamaruCli, AFolderHoldingSomethingElseIsRefusedEvenWithForceAndLeftAlone)
 // first crown (3.4 kB) cannot be written. VTK's writer says so only in its error code.
 TEST(KanamaruCli, ACrownThatCannotBeWrittenIsAnErrorAndNothingIsLeftHalfWritten) {
   const auto folder = scratch_folder("kanamaru_full_disk");
-  const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 1; exec " + std::string(HELIOSTAND_EXECUTABLE) +
+  const auto run = run_command("bash -c \"trap '' XFSZ; ulimit -f 1; exec " + heliostand_command() +
                                " kanamaru " + kanamaru_ci + " --out " + folder.string() + "\"");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("error: cannot write " + (folder / "crown_gen_0000.vtp").string() + ": "),

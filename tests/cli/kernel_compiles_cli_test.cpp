@@ -37,7 +37,7 @@ TEST(KernelCompiles, ThreeYearsOfTheTinyStandCompileEachKernelForOneGroupSize) {
   const fs::path folder = scratch_folder("kernel-compiles");
   fs::create_directories(folder);
   const fs::path cache = folder / "pocl-cache", json = folder / "bench.json";
-  const CliResult cli = run_command("POCL_CACHE_DIR=" + cache.string() + " " + HELIOSTAND_EXECUTABLE +
+  const CliResult cli = run_command("POCL_CACHE_DIR=" + cache.string() + " " + heliostand_command() +
                                     " bench stand " + tiny_bench_stand.string() +
                                     " --years 3 --device opencl -o " + json.string() + " -q");
   ASSERT_EQ(cli.status, 0) << cli.output;

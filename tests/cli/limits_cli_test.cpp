@@ -61,7 +61,7 @@ TEST_P(KeyAtItsLimit, GrowsOneYearOrIsRefusedCleanly) {
   const auto start = std::chrono::steady_clock::now();
   const CliResult result = run_command(fmt::format("{} timeout -s KILL {} {} grow {} --out {} --years 1 "
                                                    "--device reference -q",
-                                                   memory_cap(), hang_seconds, HELIOSTAND_EXECUTABLE,
+                                                   memory_cap(), hang_seconds, heliostand_command(),
                                                    (folder / "scenario.toml").string(), (folder / "out").string()));
   const double seconds = seconds_since(start);
   RecordProperty("seconds", fmt::format("{:.1f}", seconds));

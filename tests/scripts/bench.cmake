@@ -44,8 +44,19 @@ add_test(NAME bench.gpu_bundle
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0
                  "-DEXPECT_OUTPUT=PASSED  \\] [1-9].*stand table of again: the same bytes as main's.*main / again, hectare: [0-9.]+.*main / again, light of 2000 balls \\(medians\\): [0-9.]+"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 sh -c "rm -rf \"$1\" \"$2\" && \"$0/gpu/pack.sh\" \"$3\" \"$1\" again=\"$4\" && BALLS=2000 LIGHT_RUNS=1 HECTARE=\"$0/stands/tiny.toml\" WARM_UP=\"$0/stands/tiny.toml\" TEST_FILTER='KernelOptions.*' \"$0/gpu/checks.sh\" \"$1\" \"$2\""
+                 sh -c "rm -rf \"$1\" \"$2\" && \"$0/gpu/pack.sh\" \"$3\" \"$1\" again=\"$4\" && BALLS=2000 LIGHT_RUNS=1 HECTARE=\"$0/stands/tiny.toml\" WARM_UP=\"$0/stands/tiny.toml\" TEST_FILTER='KernelOptions.*:ThreadsCli.RefusesZeroThreads' \"$0/gpu/checks.sh\" \"$1\" \"$2\""
                  ${BENCH_DIR} ${PROJECT_BINARY_DIR}/test-output/gpu-bundle ${PROJECT_BINARY_DIR}/test-output/gpu-checks
                  ${PROJECT_BINARY_DIR} $<TARGET_FILE:heliostand>)
 set_tests_properties(bench.gpu_bundle PROPERTIES LABELS "bench" TIMEOUT 300 WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+# The bundle's command-line tests start the bundle's own heliostand, not this build's: with a bundle whose heliostand
+# is not a program at all, checks.sh's tests part must fail on the one command-line test it runs (were the build's
+# heliostand started instead, the test would pass).
+add_test(NAME bench.gpu_bundle_cli_tests_start_its_heliostand
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=tests exit 1.*\\[  FAILED  \\] 1 test"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 sh -c "rm -rf \"$1\" \"$2\" && \"$0/gpu/pack.sh\" \"$3\" \"$1\" && printf '#!/bin/sh\\nexit 3\\n' > \"$1/heliostand\" && TEST_FILTER='ThreadsCli.RefusesZeroThreads' \"$0/gpu/checks.sh\" \"$1\" \"$2\" tests"
+                 ${BENCH_DIR} ${PROJECT_BINARY_DIR}/test-output/gpu-bundle-stub ${PROJECT_BINARY_DIR}/test-output/gpu-checks-stub
+                 ${PROJECT_BINARY_DIR})
+set_tests_properties(bench.gpu_bundle_cli_tests_start_its_heliostand PROPERTIES LABELS "bench" TIMEOUT 300
+                     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")

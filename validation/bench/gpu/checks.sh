@@ -1,7 +1,8 @@
 #!/bin/sh
 # Issue 16's checks on a GPU machine, from a bundle made by pack.sh: the light and roots solvers' tests on its
-# device, the light field of 10^5 and 10^6 leaf balls, and the hectare's 60 years, each binary of the bundle in
-# turn (heliostand, then every NAME/heliostand), so that two commits are measured side by side on one machine.
+# device (the command-line ones among them start the bundle's heliostand, through HELIOSTAND_TEST_EXECUTABLE), the
+# light field of 10^5 and 10^6 leaf balls, and the hectare's 60 years, each binary of the bundle in turn
+# (heliostand, then every NAME/heliostand), so that two commits are measured side by side on one machine.
 #
 #   validation/bench/gpu/checks.sh BUNDLE_DIR OUT_DIR [tests] [light] [hectare]     (all three by default)
 #
@@ -20,6 +21,7 @@ set -u
 bundle=$1; out=$2; shift 2
 parts=${*:-tests light hectare}
 [ -x "$bundle/run" ] || { echo "error: $bundle/run: not a bundle made by pack.sh" >&2; exit 2; }
+case $bundle in *"'"*) echo "error: $bundle: a bundle's path may not hold a single quote" >&2; exit 2;; esac
 hectare=${HECTARE:-validation/bench/stands/hectare_60_years.toml}
 warm_up=${WARM_UP:-validation/bench/stands/planted_100.toml}
 for scenario in "$hectare" "$warm_up"; do
@@ -60,8 +62,11 @@ case " $parts " in *" tests "*)
   filter="$filter:*LightEightLanes*:*LightPatchRuns*:*LightBatches*:*LightScanBatches*"
   filter="$filter:*ComputeBackend*:*DeviceChoice*"
   filter="$filter:*GrowRoots*:*FarField*:*NearFieldSearch*:*MakeLightSolver*:*FoliageClumping*:*KernelOptions*"
-  # less the command-line tests, which run the build tree's heliostand, not the bundle's
-  "$bundle/run" heliostand_tests --gtest_filter="${TEST_FILTER:-$filter}-*Cli.*" > "$out/tests.log" 2>&1
+  # the command-line runs on the device: the benchmarks, the roots, the threads, a resumed checkpoint, the compiles
+  filter="$filter:BenchStandCli.*:BenchLight*Cli.*:RootsCli.*:ThreadsCli.*:CheckpointCli.*:KernelCompiles.*"
+  # The command-line tests start the bundle's heliostand, not the build tree's (which did not travel).
+  HELIOSTAND_TEST_EXECUTABLE="'$(cd "$bundle" && pwd)/run' heliostand" \
+    "$bundle/run" heliostand_tests --gtest_filter="${TEST_FILTER:-$filter}" > "$out/tests.log" 2>&1
   status=$?
   if [ "$status" = 0 ]; then echo "tests exit 0"; else fail "tests exit $status"; fi
   grep -E '^\[  (PASSED|FAILED|SKIPPED) *\] [0-9]' "$out/tests.log";;
