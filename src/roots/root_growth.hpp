@@ -34,6 +34,11 @@ inline constexpr std::size_t default_buds_per_query = std::size_t{1} << 15;
 RootYearSummary grow_roots(std::span<RootSystem* const> trees, SoilGrid& soil, RootFieldSolver& solver, int year,
                            std::uint64_t seed, std::size_t buds_per_query = default_buds_per_query);
 
+// The year's uptake (step 5 of grow_roots): each tree's young segments deplete the soil, tree after tree in the
+// order given (depletion multiplies vertex values, so the soil left does not depend on the order; the split of the
+// amount between trees sharing a vertex does). Returns the moisture each tree took, in that order.
+std::vector<double> take_up_in_order(std::span<RootSystem* const> trees, SoilGrid& soil);
+
 // K probe offsets (units of the perception radius) for one bud: K/2 directions uniform on the sphere at
 // radius fractions uniform in the ball, each cast together with its opposite ("antithetic" pairs), so a
 // uniform moisture field pulls nowhere and only the moisture difference across the sphere steers.

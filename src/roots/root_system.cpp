@@ -198,16 +198,26 @@ std::array<double, path_count> RootSystem::available_uptake_by_path(const SoilGr
   return by_path;
 }
 
-double RootSystem::take_up(SoilGrid& soil) const {
-  double taken = 0.0;
+std::vector<SoilGrid::DepletionShares> RootSystem::uptake_shares(const SoilGrid& soil) const {
+  std::vector<SoilGrid::DepletionShares> shares;
   for (const RootSegment& segment : segments_) {
     const double fraction = parameters_.uptake_rate_per_m * uptake_capacity(segment);
     if (fraction < 1e-9) continue;  // old, lignified roots
-    taken += soil.deplete(SoilField::moisture, segment.end, fraction);
-    soil.deplete(SoilField::nutrient, segment.end, fraction);
+    shares.push_back(soil.depletion_shares(segment.end, fraction));
+  }
+  return shares;
+}
+
+double RootSystem::take_up(SoilGrid& soil, std::span<const SoilGrid::DepletionShares> shares) {
+  double taken = 0.0;
+  for (const SoilGrid::DepletionShares& segment : shares) {
+    taken += soil.deplete(SoilField::moisture, segment);
+    soil.deplete(SoilField::nutrient, segment);
   }
   return taken;
 }
+
+double RootSystem::take_up(SoilGrid& soil) const { return take_up(soil, uptake_shares(soil)); }
 
 double RootSystem::total_length_m() const {
   double total = 0.0;

@@ -89,6 +89,11 @@ class RootSystem {
 
   // Young segments deplete moisture and nutrients at their tips (docs/roots.md); returns moisture taken.
   double take_up(SoilGrid& soil) const;
+  // The same in two steps: what each absorbing segment takes of the vertices around its tip (reads the soil's
+  // geometry only: the trees' shares can be found in parallel), then the depletion itself, which reads and writes
+  // the soil and so goes tree after tree in the stand's order. Returns the moisture taken.
+  std::vector<SoilGrid::DepletionShares> uptake_shares(const SoilGrid& soil) const;
+  static double take_up(SoilGrid& soil, std::span<const SoilGrid::DepletionShares> shares);
 
   double total_length_m() const;
 

@@ -96,12 +96,24 @@ void SoilGrid::fill_layers(SoilField field, const std::vector<double>& bottoms_m
   set_capacity_to_current(field);
 }
 
+SoilGrid::DepletionShares SoilGrid::depletion_shares(const glm::dvec3& point, double fraction) const {
+  const std::array<Corner, 8> around = corners(point);
+  DepletionShares shares;
+  for (std::size_t c = 0; c < around.size(); ++c)
+    shares[c] = {around[c].index, std::clamp(fraction * around[c].weight, 0.0, 1.0)};
+  return shares;
+}
+
 double SoilGrid::deplete(SoilField field, const glm::dvec3& point, double fraction) {
+  return deplete(field, depletion_shares(point, fraction));
+}
+
+double SoilGrid::deplete(SoilField field, const DepletionShares& shares) {
   std::vector<double>& v = values(field);
   double removed = 0.0;
-  for (const Corner& corner : corners(point)) {
-    const double take = std::clamp(fraction * corner.weight, 0.0, 1.0) * v[corner.index];
-    v[corner.index] -= take;
+  for (const VertexShare& vertex : shares) {
+    const double take = vertex.share * v[vertex.index];
+    v[vertex.index] -= take;
     removed += take;
   }
   return removed;

@@ -64,9 +64,21 @@ class SoilGrid {
   // `bottoms_m[n-1]` down to `bottoms_m[n]` (vertices below the last bottom take the last value).
   void fill_layers(SoilField field, const std::vector<double>& bottoms_m, const std::vector<double>& values);
 
+  // What a depletion at a point takes of each of the 8 vertices around it: min(1, fraction × trilinear weight)
+  // of the vertex's current value. It reads only the grid's geometry, so the shares of many points can be
+  // found at once (in parallel) and taken afterwards, in order.
+  struct VertexShare {
+    std::size_t index;
+    double share;
+  };
+  using DepletionShares = std::array<VertexShare, 8>;
+  DepletionShares depletion_shares(const glm::dvec3& point, double fraction) const;
+
   // Removes `fraction_per_vertex × weight × current value` from the 8 vertices around `point`
   // (trilinear weights), never below 0. Returns the amount removed (sum over vertices).
   double deplete(SoilField field, const glm::dvec3& point, double fraction);
+  // The same with the shares found beforehand: the same amounts, bit for bit.
+  double deplete(SoilField field, const DepletionShares& shares);
 
   // Recharge: value += rate · (capacity − value) per year at every vertex (compounded over `years`).
   void recharge(const SoilRecharge& recharge, double years = 1.0);
