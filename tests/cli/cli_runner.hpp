@@ -32,7 +32,8 @@ inline CliResult run_command(const std::string& command_line) {
 
 // The command line that starts heliostand: this build's, or the one HELIOSTAND_TEST_EXECUTABLE names, so that the
 // command-line tests can run another copy of it (validation/bench/gpu/checks.sh runs a GPU machine's bundle's
-// heliostand through its packed loader: "'/path/bundle/run' heliostand"). A shell command, quoted as the shell reads it.
+// heliostand through its packed loader: "'/path/bundle/run' heliostand"). A shell command, quoted as the shell
+// reads it.
 inline std::string heliostand_command() {
   const char* chosen = std::getenv("HELIOSTAND_TEST_EXECUTABLE");
   return chosen != nullptr && *chosen != '\0' ? std::string(chosen) : std::string(HELIOSTAND_EXECUTABLE);
