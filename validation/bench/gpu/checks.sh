@@ -52,7 +52,7 @@ done
 program() { if [ "$1" = main ]; then echo heliostand; else echo "$1/heliostand"; fi; }
 
 { command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader
-  echo "host cores: $(nproc)"; lscpu | grep 'Model name'; echo "binaries: $names"
+  echo "host cores: $(nproc)"; lscpu | grep -E '^(Model name|CPU family|Model):'; echo "binaries: $names"
   "$bundle/run" heliostand devices; } > "$out/machine.txt" 2>&1
 cat "$out/machine.txt"
 
