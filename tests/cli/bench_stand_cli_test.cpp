@@ -17,6 +17,7 @@
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
 #include "io/read_multiblock.hpp"
+#include "scoped_environment.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -215,9 +216,11 @@ TEST(BenchStandCli, WritesTheTablesOnlyWhereAsked) {
   const fs::path folder = scratch_folder("bench-stand-tables");
   const fs::path temporary = folder / "tmp";
   fs::create_directories(temporary);
-  ::setenv("TMPDIR", temporary.c_str(), 1);  // inherited by the command (std::filesystem::temp_directory_path)
-  const Bench scratch = bench_tiny(folder);
-  ::unsetenv("TMPDIR");
+  const Bench scratch = [&] {
+    // Inherited by the command (std::filesystem::temp_directory_path).
+    const ScopedEnvironment tmpdir("TMPDIR", temporary.string());
+    return bench_tiny(folder);
+  }();
   ASSERT_EQ(scratch.cli.status, 0) << scratch.cli.output;
   EXPECT_TRUE(fs::is_empty(temporary)) << "the temporary tables are removed";
 

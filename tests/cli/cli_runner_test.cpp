@@ -2,37 +2,20 @@
 // (a GPU machine's bundle runs its own packed heliostand: validation/bench/gpu/checks.sh).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <optional>
 #include <string>
 
 #include "cli/cli_runner.hpp"
+#include "scoped_environment.hpp"
 
 namespace heliostand::testing {
 namespace {
 
-// Sets (or, given nothing, unsets) HELIOSTAND_TEST_EXECUTABLE for one test and puts back what was there.
-class TestExecutable {
+// HELIOSTAND_TEST_EXECUTABLE set (or, given nothing, unset) for one test, and put back as it was.
+class TestExecutable : public ScopedEnvironment {
  public:
-  explicit TestExecutable(const std::optional<std::string>& command) {
-    if (const char* before = std::getenv(name)) before_ = before;
-    if (command)
-      ::setenv(name, command->c_str(), 1);
-    else
-      ::unsetenv(name);
-  }
-  ~TestExecutable() {
-    if (before_)
-      ::setenv(name, before_->c_str(), 1);
-    else
-      ::unsetenv(name);
-  }
-  TestExecutable(const TestExecutable&) = delete;
-  TestExecutable& operator=(const TestExecutable&) = delete;
-
- private:
-  static constexpr const char* name = "HELIOSTAND_TEST_EXECUTABLE";
-  std::optional<std::string> before_;
+  explicit TestExecutable(const std::optional<std::string>& command)
+      : ScopedEnvironment("HELIOSTAND_TEST_EXECUTABLE", command) {}
 };
 
 TEST(CliRunner, RunsThisBuildsHeliostandWhenNoOtherIsNamed) {

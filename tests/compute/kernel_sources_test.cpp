@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include "scoped_environment.hpp"
 
 namespace heliostand::compute {
 
@@ -17,9 +19,10 @@ TEST(KernelSources, OverrideFolderIsReadAndIncludesAreInlined) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "part.clh") << "#define ANSWER 42\n";
   std::ofstream(dir / "main.cl") << "#include \"part.clh\"\nkernel void k() {}\n";
-  ::setenv("HELIOSTAND_KERNEL_DIR", dir.c_str(), 1);
-  const std::string text = kernel_source("main.cl");
-  ::unsetenv("HELIOSTAND_KERNEL_DIR");
+  const std::string text = [&] {
+    const testing::ScopedEnvironment kernel_dir("HELIOSTAND_KERNEL_DIR", dir.string());
+    return kernel_source("main.cl");
+  }();
   std::filesystem::remove_all(dir);
   EXPECT_NE(text.find("#define ANSWER 42"), std::string::npos);
   EXPECT_EQ(text.find("#include"), std::string::npos);

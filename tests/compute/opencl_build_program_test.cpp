@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -17,6 +16,7 @@
 #include "light/make_light_solver.hpp"
 #include "roots/make_root_field_solver.hpp"
 #include "roots/root_field_solver.hpp"
+#include "scoped_environment.hpp"
 
 namespace heliostand::compute {
 namespace {
@@ -45,12 +45,10 @@ class BrokenKernelFiles {
  public:
   BrokenKernelFiles() {
     for (const char* file : {"light.cl", "roots.cl"}) std::ofstream(dir_ / file) << "kernel void broken( {\n";
-    ::setenv("HELIOSTAND_KERNEL_DIR", dir_.c_str(), 1);
   }
-  ~BrokenKernelFiles() {
-    ::unsetenv("HELIOSTAND_KERNEL_DIR");
-    std::filesystem::remove_all(dir_);
-  }
+  ~BrokenKernelFiles() { std::filesystem::remove_all(dir_); }
+  BrokenKernelFiles(const BrokenKernelFiles&) = delete;
+  BrokenKernelFiles& operator=(const BrokenKernelFiles&) = delete;
 
  private:
   std::filesystem::path dir_ = [] {
@@ -58,6 +56,7 @@ class BrokenKernelFiles {
     std::filesystem::create_directories(dir);
     return dir;
   }();
+  testing::ScopedEnvironment kernel_dir_{"HELIOSTAND_KERNEL_DIR", dir_.string()};  // after dir_: made from it
 };
 
 TEST(BuildProgram, SolversWhoseKernelDoesNotCompileThrow) {
