@@ -12,6 +12,8 @@
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/json_string.hpp"
+#include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "geometry/angles.hpp"
 #include "light/make_light_solver.hpp"
@@ -143,17 +145,6 @@ std::string ratio(const Run& slow, const Run& fast) {
   return fmt::format("{:.4g}", slow.seconds / fast.seconds);
 }
 
-// `text` as a JSON string (a stand's name is a path: quotes, backslashes and control characters escaped).
-std::string json_string(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += {'\\', c};
-    else if (static_cast<unsigned char>(c) < 0x20) quoted += fmt::format("\\u{:04x}", int(c));
-    else quoted += c;
-  }
-  return quoted + "\"";
-}
-
 const char* sky_name(LightParameters::Sky sky) {
   return sky == LightParameters::Sky::kanamaru ? "kanamaru" : "overcast";
 }
@@ -253,7 +244,7 @@ std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmark
 
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {
   std::string text = fmt::format(
-      R"({{"benchmark": "light", "seed": {}, "hardware_threads": {},)"
+      R"({{"benchmark": "light", "seed": {}, "hardware_threads": {}, "processor": {},)"
       "\n"
       R"( "parameters": {},)"
       "\n"
@@ -263,7 +254,7 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options, const std:
       "\n"
       R"( "stands": [)"
       "\n",
-      options.seed, std::thread::hardware_concurrency(), parameters_json(options.parameters),
+      options.seed, std::thread::hardware_concurrency(), processor_json(this_processor()), parameters_json(options.parameters),
       options.reference_exact_max, options.reference_culled_max, options.opencl_exact_max, options.subsample);
   std::vector<std::string> rows;
   for (std::size_t ball_count : options.ball_counts) rows.push_back(synthetic_row(options, ball_count));

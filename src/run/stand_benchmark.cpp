@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/processor.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
 
@@ -77,6 +78,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["scenario"] = scenario.file.string();
   json["device"] = run.device;
   json["hardware_threads"] = std::thread::hardware_concurrency();  // the cores stage_cpu_seconds can fill
+  json["processor"] = nlohmann::json::parse(processor_json(this_processor()));  // the machine the seconds are of
   json["seed"] = scenario.run.seed;
   json["vtk_output"] = false;
   json["years"] = run.last_stand_age - run.first_stand_age;

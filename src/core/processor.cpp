@@ -1,0 +1,85 @@
+#include "core/processor.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <fstream>
+#include <istream>
+#include <iterator>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/json_string.hpp"
+
+namespace heliostand {
+namespace {
+
+// The extensions a kernel compiler vectorises with, widest last (x86, then 64-bit Arm's "Features").
+constexpr std::array<const char*, 7> known_vector_extensions{"sse4_2", "avx", "avx2", "fma", "avx512f", "asimd", "sve"};
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::optional<int> integer(const std::string& text) {
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+std::vector<std::string> vector_extensions(const std::string& flags) {
+  std::vector<std::string> present;
+  std::istringstream words(flags);
+  const std::vector<std::string> all{std::istream_iterator<std::string>(words), {}};
+  for (const char* extension : known_vector_extensions)
+    if (std::find(all.begin(), all.end(), extension) != all.end()) present.emplace_back(extension);
+  return present;
+}
+
+std::string optional_json(const std::optional<int>& value) { return value ? std::to_string(*value) : "null"; }
+
+}  // namespace
+
+Processor processor_from_cpuinfo(std::istream& cpuinfo) {
+  Processor processor;
+  bool flags_seen = false;
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (trimmed(line).empty()) {
+      if (!processor.model_name.empty() || flags_seen) break;  // the end of the first processor's block
+      continue;
+    }
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const std::string key = trimmed(line.substr(0, colon)), value = trimmed(line.substr(colon + 1));
+    if (key == "model name")
+      processor.model_name = value;
+    else if (key == "cpu family")
+      processor.family = integer(value);
+    else if (key == "model")
+      processor.model = integer(value);
+    else if (key == "flags" || key == "Features")
+      processor.vector_extensions = vector_extensions(value), flags_seen = true;
+  }
+  return processor;
+}
+
+Processor this_processor() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  return cpuinfo ? processor_from_cpuinfo(cpuinfo) : Processor{};
+}
+
+std::string processor_json(const Processor& processor) {
+  std::vector<std::string> extensions;
+  for (const std::string& extension : processor.vector_extensions) extensions.push_back(json_string(extension));
+  return fmt::format(R"({{"model_name": {}, "cpu_family": {}, "model": {}, "vector_extensions": [{}]}})",
+                     processor.model_name.empty() ? "null" : json_string(processor.model_name),
+                     optional_json(processor.family), optional_json(processor.model), fmt::join(extensions, ", "));
+}
+
+}  // namespace heliostand

@@ -1,0 +1,46 @@
+// Both benchmarks' JSON names the machine its seconds are of: the hardware threads and the processor (model name,
+// CPU family and model, vector extensions), so figures from two machines that lscpu calls alike are not compared.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_runner.hpp"
+#include "core/processor.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+void expect_this_machine(const nlohmann::json& json) {
+  EXPECT_EQ(json.at("hardware_threads").get<unsigned>(), std::thread::hardware_concurrency());
+  EXPECT_EQ(json.at("processor"), nlohmann::json::parse(processor_json(this_processor())));
+  EXPECT_FALSE(json.at("processor").at("vector_extensions").empty()) << json.at("processor").dump();
+}
+
+}  // namespace
+
+TEST(BenchMachineCli, TheLightBenchmarkNamesThisProcessor) {
+  const fs::path folder = scratch_folder("bench-machine-light");
+  fs::create_directories(folder);
+  const fs::path file = folder / "light.json";
+  const CliResult cli = run_cli("bench light --balls 300 --subsample 20 --device none --reference-culled-max 0 -q -o " +
+                                file.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  expect_this_machine(nlohmann::json::parse(read_text(file)));
+}
+
+TEST(BenchMachineCli, TheStandBenchmarkNamesThisProcessor) {
+  const fs::path folder = scratch_folder("bench-machine-stand");
+  fs::create_directories(folder);
+  const fs::path file = folder / "stand.json";
+  const CliResult cli = run_cli("bench stand " + tiny_bench_stand.string() +
+                                " --years 1 --device reference -q -o " + file.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  expect_this_machine(nlohmann::json::parse(read_text(file)));
+}
+
+}  // namespace heliostand::testing
