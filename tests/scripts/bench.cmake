@@ -30,9 +30,10 @@ set_tests_properties(bench.scaling_table PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
 # The same binary given twice (to see the machine's noise): each of its two tables has the tiny stand's one row
 # ("| 8 | 8 |"), and the ratio table one ("| 8 | " then a ratio); runs filed by path instead of position put both
-# runs in each table.
+# runs in each table. The machine line names the CPU family and model from the runs' JSON (lscpu's model name alone
+# does not tell these machines apart).
 add_test(NAME bench.scaling_table_same_binary_twice
-         COMMAND sh -c "out=$(\"$0\" \"$1/scaling.py\" --heliostand \"$2\" --heliostand \"$2\" --years 1 --device reference --stand \"$1/stands/tiny.toml\" --out \"$3\") || exit 1; rows=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | 8 |'); ratios=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | [0-9]*[.][0-9][0-9] | '); echo \"stand rows $rows (want 2), ratio rows $ratios (want 1)\"; [ \"$rows\" = 2 ] && [ \"$ratios\" = 1 ]"
+         COMMAND sh -c "out=$(\"$0\" \"$1/scaling.py\" --heliostand \"$2\" --heliostand \"$2\" --years 1 --device reference --stand \"$1/stands/tiny.toml\" --out \"$3\") || exit 1; rows=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | 8 |'); ratios=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | [0-9]*[.][0-9][0-9] | '); machine=$(printf '%s\\n' \"$out\" | grep -c '^Machine: [0-9]* CPUs (.*; CPU family [0-9a-z]*, model [0-9a-z]*; '); echo \"stand rows $rows (want 2), ratio rows $ratios (want 1), machine lines with the CPU family $machine (want 1)\"; [ \"$rows\" = 2 ] && [ \"$ratios\" = 1 ] && [ \"$machine\" = 1 ]"
                  ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR} $<TARGET_FILE:heliostand> ${PROJECT_BINARY_DIR}/test-output/bench-scaling-twice)
 set_tests_properties(bench.scaling_table_same_binary_twice PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")

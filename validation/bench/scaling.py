@@ -35,9 +35,17 @@ def parse_arguments():
     return parser.parse_args()
 
 
-def machine_line():
-    cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
-                if line.startswith("model name")), platform.processor())
+def machine_line(processor):
+    """The machine, with the processor as `bench stand` describes it: lscpu's model name alone ("AMD EPYC") does not
+    tell apart the machines whose speed differs most (AVX-512 or not)."""
+    def known(value):
+        return "unknown" if value is None else value
+    if processor:
+        cpu = (f"{known(processor['model_name'])}; CPU family {known(processor['cpu_family'])}, "
+               f"model {known(processor['model'])}; {' '.join(processor['vector_extensions']) or 'no vector extensions'}")
+    else:  # a binary older than the field
+        cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                    if line.startswith("model name")), platform.processor())
     memory_kb = next(int(line.split()[1]) for line in Path("/proc/meminfo").read_text().splitlines()
                      if line.startswith("MemTotal"))
     return f"{os.cpu_count()} CPUs ({cpu}), {memory_kb / 1024 / 1024:.0f} GiB RAM, {platform.platform()}"
@@ -150,8 +158,9 @@ def main():
     rows = [[row(run) for run in binary_runs] for binary_runs in runs]
 
     device = runs[0][0]["device"]
+    processor = next((run["processor"] for binary_runs in runs for run in binary_runs if "processor" in run), None)
     lines = [f"Stand scaling, {arguments.years} years per stand, started {started}.", "",
-             f"Machine: {machine_line()}; device {device}.",
+             f"Machine: {machine_line(processor)}; device {device}.",
              f"Load average (1, 5, 15 min) before and after each run: {'; '.join(loads)}.", "",
              "Command: `" + " ".join([sys.argv[0]] + sys.argv[1:]) + "`", ""]
     for binary, binary_rows in zip(binaries, rows):
