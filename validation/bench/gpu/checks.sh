@@ -63,7 +63,8 @@ case " $parts " in *" tests "*)
   filter="$filter:*ComputeBackend*:*DeviceChoice*"
   filter="$filter:*GrowRoots*:*FarField*:*NearFieldSearch*:*MakeLightSolver*:*FoliageClumping*:*KernelOptions*"
   # the command-line runs on the device: the benchmarks, the roots, the threads, a resumed checkpoint, the compiles
-  filter="$filter:BenchStandCli.*:BenchLight*Cli.*:RootsCli.*:ThreadsCli.*:CheckpointCli.*:KernelCompiles.*"
+  filter="$filter:BenchStandCli.*:BenchLight*Cli.*:BenchMachineCli.*:RootsCli.*:ThreadsCli.*:CheckpointCli.*"
+  filter="$filter:KernelCompiles.*"
   # The command-line tests start the bundle's heliostand, not the build tree's (which did not travel).
   HELIOSTAND_TEST_EXECUTABLE="'$(cd "$bundle" && pwd)/run' heliostand" \
     "$bundle/run" heliostand_tests --gtest_filter="${TEST_FILTER:-$filter}" > "$out/tests.log" 2>&1
