@@ -16,7 +16,7 @@
 namespace heliostand {
 namespace {
 
-// The extensions a kernel compiler vectorises with, widest last (x86, then 64-bit Arm's "Features").
+// The extensions a kernel compiler vectorises with: x86's from SSE4.2 to AVX-512, then 64-bit Arm's (its "Features").
 constexpr std::array<const char*, 7> known_vector_extensions{"sse4_2", "avx", "avx2", "fma", "avx512f", "asimd", "sve"};
 
 std::string trimmed(const std::string& text) {
