@@ -41,8 +41,9 @@ def machine_line(processor):
     def known(value):
         return "unknown" if value is None else value
     if processor:
+        extensions = " ".join(processor["vector_extensions"]) or "no vector extensions"
         cpu = (f"{known(processor['model_name'])}; CPU family {known(processor['cpu_family'])}, "
-               f"model {known(processor['model'])}; {' '.join(processor['vector_extensions']) or 'no vector extensions'}")
+               f"model {known(processor['model'])}; {extensions}")
     else:  # a binary older than the field
         cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
                     if line.startswith("model name")), platform.processor())
