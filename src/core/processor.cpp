@@ -7,11 +7,13 @@
 #include <istream>
 #include <iterator>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "core/json_string.hpp"
+#include "core/trim_blanks.hpp"
 
 namespace heliostand {
 namespace {
@@ -19,22 +21,16 @@ namespace {
 // The extensions a kernel compiler vectorises with: x86's from SSE4.2 to AVX-512, then 64-bit Arm's (its "Features").
 constexpr std::array<const char*, 7> known_vector_extensions{"sse4_2", "avx", "avx2", "fma", "avx512f", "asimd", "sve"};
 
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-std::optional<int> integer(const std::string& text) {
+std::optional<int> integer(std::string_view text) {
   int value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc{} || end != text.data() + text.size()) return std::nullopt;
   return value;
 }
 
-std::vector<std::string> vector_extensions(const std::string& flags) {
+std::vector<std::string> vector_extensions(std::string_view flags) {
   std::vector<std::string> present;
-  std::istringstream words(flags);
+  std::istringstream words{std::string(flags)};
   const std::vector<std::string> all{std::istream_iterator<std::string>(words), {}};
   for (const char* extension : known_vector_extensions)
     if (std::find(all.begin(), all.end(), extension) != all.end()) present.emplace_back(extension);
@@ -50,15 +46,16 @@ Processor processor_from_cpuinfo(std::istream& cpuinfo) {
   bool flags_seen = false;
   std::string line;
   while (std::getline(cpuinfo, line)) {
-    if (trimmed(line).empty()) {
+    if (trim_blanks(line).empty()) {
       if (!processor.model_name.empty() || flags_seen) break;  // the end of the first processor's block
       continue;
     }
     const auto colon = line.find(':');
     if (colon == std::string::npos) continue;
-    const std::string key = trimmed(line.substr(0, colon)), value = trimmed(line.substr(colon + 1));
+    const std::string_view key = trim_blanks(std::string_view(line).substr(0, colon));
+    const std::string_view value = trim_blanks(std::string_view(line).substr(colon + 1));
     if (key == "model name")
-      processor.model_name = value;
+      processor.model_name = std::string(value);
     else if (key == "cpu family")
       processor.family = integer(value);
     else if (key == "model")

@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "survey/cell_text.hpp"
+#include "core/trim_blanks.hpp"
 #include "survey/strict_number.hpp"
 
 namespace heliostand {

@@ -12,7 +12,7 @@
 #include <unordered_map>
 
 #include "core/input_error.hpp"
-#include "survey/cell_text.hpp"
+#include "core/trim_blanks.hpp"
 #include "survey/check_hollows.hpp"
 #include "survey/csv_table.hpp"
 #include "survey/hollow_cell.hpp"

@@ -4,7 +4,7 @@
 #include <array>
 #include <cctype>
 
-#include "survey/cell_text.hpp"
+#include "core/trim_blanks.hpp"
 
 namespace heliostand {
 

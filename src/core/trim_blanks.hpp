@@ -1,5 +1,6 @@
 #pragma once
-// Survey cells and header names are read without the blanks around them (spreadsheets pad cells).
+// Text read without the blanks around it: survey cells and header names (spreadsheets pad cells), and the keys and
+// values of /proc/cpuinfo (tab-aligned).
 #include <string_view>
 
 namespace heliostand {
