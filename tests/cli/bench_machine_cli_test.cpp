@@ -27,8 +27,7 @@ TEST(BenchMachineCli, TheLightBenchmarkNamesThisProcessor) {
   const fs::path folder = scratch_folder("bench-machine-light");
   fs::create_directories(folder);
   const fs::path file = folder / "light.json";
-  const CliResult cli = run_cli("bench light --balls 300 --subsample 20 --device none --reference-culled-max 0 -q -o " +
-                                file.string());
+  const CliResult cli = run_cli(quick_reference_light_bench + " -q -o " + file.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   expect_this_machine(nlohmann::json::parse(read_text(file)));
 }

@@ -10,7 +10,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string reference_only = " --balls 300 --subsample 20 --device none --reference-culled-max 0 -q";
+const std::string quiet_reference_bench = quick_reference_light_bench + " -q";
 
 }  // namespace
 
@@ -19,7 +19,7 @@ TEST(BenchOutputCli, AnUnwritableFileIsAnErrorAndNothingIsReported) {
   fs::remove_all(folder);
   fs::create_directories(folder);
   const fs::path json = folder / "no-such-folder" / "light.json";
-  const CliResult refused = run_cli("bench light" + reference_only + " -o " + json.string());
+  const CliResult refused = run_cli(quiet_reference_bench + " -o " + json.string());
   EXPECT_NE(refused.status, 0) << refused.output;
   EXPECT_NE(refused.output.find("cannot write " + json.string() + ": No such file or directory"), std::string::npos)
       << refused.output;
@@ -32,7 +32,7 @@ TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
   fs::remove_all(folder);
   fs::create_directories(folder);
   const fs::path json = folder / "light.json";
-  const CliResult written = run_cli("bench light" + reference_only + " -o " + json.string());
+  const CliResult written = run_cli(quiet_reference_bench + " -o " + json.string());
   ASSERT_EQ(written.status, 0) << written.output;
   const std::string file = read_text(json);
   EXPECT_NE(file.find("\"benchmark\": \"light\""), std::string::npos) << file;
@@ -42,11 +42,10 @@ TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
 
 // -q leaves only warnings and errors on stderr: the progress lines (one as each solver starts and ends) are info.
 TEST(BenchOutputCli, QuietLeavesOnlyTheJson) {
-  const std::string without_quiet = reference_only.substr(0, reference_only.rfind(" -q"));
-  const CliResult chatty = run_cli("bench light" + without_quiet);
+  const CliResult chatty = run_cli(quick_reference_light_bench);
   ASSERT_EQ(chatty.status, 0) << chatty.output;
   EXPECT_NE(chatty.output.find("bench light: 300 balls"), std::string::npos) << "the progress lines shown: " << chatty.output;
-  const CliResult quiet = run_cli("bench light" + reference_only);
+  const CliResult quiet = run_cli(quiet_reference_bench);
   ASSERT_EQ(quiet.status, 0) << quiet.output;
   EXPECT_EQ(quiet.output.find("bench light:"), std::string::npos) << quiet.output;
   EXPECT_EQ(quiet.output.front(), '{') << "stdout holds the JSON alone: " << quiet.output;

@@ -49,6 +49,11 @@ inline std::filesystem::path source_path(const std::string& relative) {
 // validation/bench/stands/tiny.toml, the bench tests' stand.
 inline const std::filesystem::path tiny_bench_stand = source_path("validation/bench/stands/tiny.toml");
 
+// A light benchmark that takes a moment: 300 random leaf balls, the plain C++ solvers only (no OpenCL device, no
+// culled reference). The bench tests append -q, -o and what else they check.
+inline const std::string quick_reference_light_bench =
+    "bench light --balls 300 --subsample 20 --device none --reference-culled-max 0";
+
 // A fresh, empty folder under the build tree for one test's output.
 inline std::filesystem::path scratch_folder(const std::string& name) {
   const auto path = std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / name;
