@@ -44,7 +44,8 @@ TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
 TEST(BenchOutputCli, QuietLeavesOnlyTheJson) {
   const CliResult chatty = run_cli(quick_reference_light_bench);
   ASSERT_EQ(chatty.status, 0) << chatty.output;
-  EXPECT_NE(chatty.output.find("bench light: 300 balls"), std::string::npos) << "the progress lines shown: " << chatty.output;
+  EXPECT_NE(chatty.output.find("bench light: 300 balls"), std::string::npos)
+      << "the progress lines shown: " << chatty.output;
   const CliResult quiet = run_cli(quiet_reference_bench);
   ASSERT_EQ(quiet.status, 0) << quiet.output;
   EXPECT_EQ(quiet.output.find("bench light:"), std::string::npos) << quiet.output;
