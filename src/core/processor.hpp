@@ -1,5 +1,5 @@
 #pragma once
-// The processor a benchmark ran on. Timings are only comparable on one machine, and these machines' lscpu
+// The processor a benchmark or a run ran on. Timings are only comparable on one machine, and these machines' lscpu
 // "Model name" is often only "AMD EPYC": two of them with that name ran the same hectare in 524 and 829 s
 // (docs/performance.md). The CPU family and model tell such machines apart, and the vector extensions say what
 // PoCL can compile the kernels for (of the two earlier EPYCs, the one with AVX-512 took 688-739 s, the one without

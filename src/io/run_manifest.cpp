@@ -19,6 +19,8 @@ std::string to_json(const RunManifest& manifest) {
   json["device"] = manifest.device;
   json["started_utc"] = manifest.started_utc;
   json["finished_utc"] = manifest.finished_utc;
+  json["finished_on"] = {{"hardware_threads", manifest.finished_on_hardware_threads},
+                         {"processor", nlohmann::ordered_json::parse(processor_json(manifest.finished_on_processor))}};
   json["first_stand_age"] = manifest.first_stand_age;
   json["last_stand_age"] = manifest.last_stand_age;
   json["wall_seconds"] = manifest.wall_seconds;

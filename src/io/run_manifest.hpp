@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/processor.hpp"
+
 namespace heliostand {
 
 struct RunManifest {
@@ -18,6 +20,10 @@ struct RunManifest {
   std::string device;                        // "reference", "opencl:0 (pocl cpu)", ...
   std::string started_utc;                   // ISO 8601, e.g. "2026-11-21T08:00:00Z"
   std::string finished_utc;
+  // The machine of the session that finished the run, so its seconds are read as that machine's. A resumed run's
+  // earlier sessions may have run on another one: their seconds are in wall_seconds, their machines not recorded.
+  unsigned finished_on_hardware_threads = 0;
+  Processor finished_on_processor;
   int first_stand_age = 0;
   int last_stand_age = 0;
   double wall_seconds = 0;

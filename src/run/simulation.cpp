@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <thread>
 
 #include <spdlog/spdlog.h>
 
 #include "compute/compute_backend.hpp"
+#include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "io/checkpoint_state.hpp"
 #include "io/root_vtk.hpp"
@@ -187,6 +189,8 @@ RunManifest run_manifest(const Scenario& scenario, const std::string& device, co
   manifest.stage_seconds = summary.stage_seconds;
   manifest.wall_seconds = summary.wall_seconds;
   manifest.finished_utc = utc_now_iso8601();
+  manifest.finished_on_hardware_threads = std::thread::hardware_concurrency();
+  manifest.finished_on_processor = this_processor();
   return manifest;
 }
 

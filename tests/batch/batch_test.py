@@ -3,8 +3,9 @@
 
   batch_test.py same ROOT_A ROOT_B
       Every file under both roots is the same, byte for byte, except run.json's timing fields (started_utc,
-      finished_utc, wall_seconds, stage_seconds), which are compared without them. Both roots must hold the
-      same files, and at least one run.json (an empty batch proves nothing).
+      finished_utc, wall_seconds, stage_seconds) and the machine that finished the run (finished_on), which are
+      compared without them. Both roots must hold the same files, and at least one run.json (an empty batch
+      proves nothing).
   batch_test.py same ROOT_A ROOT_B --regrown RUN
       As above, and ROOT_B was a restart of ROOT_A with RUN unfinished: every other run.json is identical
       timings included (those runs were kept, not grown again).
@@ -17,7 +18,7 @@ import json
 import os
 import sys
 
-TIMING_KEYS = ("started_utc", "finished_utc", "wall_seconds", "stage_seconds")
+TIMING_KEYS = ("started_utc", "finished_utc", "finished_on", "wall_seconds", "stage_seconds")
 
 
 def files_under(root):

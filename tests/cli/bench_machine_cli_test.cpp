@@ -1,5 +1,6 @@
-// Both benchmarks' JSON names the machine its seconds are of: the hardware threads and the processor (model name,
-// CPU family and model, vector extensions), so figures from two machines that lscpu calls alike are not compared.
+// Both benchmarks' JSON, and a run's run.json, name the machine their seconds are of: the hardware threads and the
+// processor (model name, CPU family and model, vector extensions), so figures from two machines that lscpu calls
+// alike are not compared.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -40,6 +41,15 @@ TEST(BenchMachineCli, TheStandBenchmarkNamesThisProcessor) {
                                 " --years 1 --device reference -q -o " + file.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   expect_this_machine(nlohmann::json::parse(read_text(file)));
+}
+
+// run.json names the machine of the session that finished the run (docs/formats.md "run.json").
+TEST(BenchMachineCli, TheRunManifestNamesTheMachineThatFinishedTheRun) {
+  const fs::path folder = scratch_folder("bench-machine-grow");
+  const CliResult cli =
+      run_cli("grow " + tiny_bench_stand.string() + " --years 1 --device reference -q --out " + folder.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  expect_this_machine(nlohmann::json::parse(read_text(folder / "run.json")).at("finished_on"));
 }
 
 }  // namespace heliostand::testing

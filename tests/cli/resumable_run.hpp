@@ -28,7 +28,8 @@ inline fs::path write_resumable_scenario(const fs::path& folder) {
   return folder / "scenario.toml";
 }
 
-// Every file under `folder` (hidden ones too), by relative path, with its bytes; run.json without its timings.
+// Every file under `folder` (hidden ones too), by relative path, with its bytes; run.json without its timings and
+// the machine that finished the run (a resumed run may finish on another).
 inline std::map<std::string, std::string> outputs_of(const fs::path& folder) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
@@ -37,7 +38,7 @@ inline std::map<std::string, std::string> outputs_of(const fs::path& folder) {
     std::string bytes = read_text(entry.path());
     if (name == "run.json") {
       auto manifest = nlohmann::json::parse(bytes);
-      for (const char* timing : {"started_utc", "finished_utc", "wall_seconds", "stage_seconds"}) {
+      for (const char* timing : {"started_utc", "finished_utc", "finished_on", "wall_seconds", "stage_seconds"}) {
         EXPECT_TRUE(manifest.contains(timing)) << timing;
         manifest.erase(timing);
       }

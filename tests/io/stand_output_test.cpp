@@ -42,6 +42,8 @@ RunManifest example_manifest() {
   m.last_stand_age = 15;
   m.wall_seconds = 1.25;
   m.stage_seconds = {{"grow", 0.5}, {"light", 0.75}};
+  m.finished_on_hardware_threads = 2;
+  m.finished_on_processor = {"AMD EPYC", 26, 2, {"avx2", "avx512f"}};
   return m;
 }
 
@@ -104,6 +106,8 @@ TEST_F(StandOutputRun, WritesTheTablesTheVtkSeriesAndRunJsonLast) {
   EXPECT_EQ(json["seed"].get<std::uint64_t>(), 18446744073709551615ull);
   EXPECT_EQ(json["command_line"], "heliostand grow stands/tiny.toml --out \"run 1\"");
   EXPECT_EQ(json["stage_seconds"]["light"], 0.75);
+  EXPECT_EQ(json["finished_on"], nlohmann::json::parse(R"({"hardware_threads": 2, "processor": {"model_name":
+      "AMD EPYC", "cpu_family": 26, "model": 2, "vector_extensions": ["avx2", "avx512f"]}})"));
   const auto files = json["output_files"].get<std::vector<std::string>>();
   for (const char* expected : {"stand.pvd", "stand/stand_age_0010.vtm", "stand/stand_age_0015.vtm",
                                "stand_table.csv", "trees.csv", "events.csv", "run.json"}) {
