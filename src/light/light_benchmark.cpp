@@ -254,8 +254,9 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options, const std:
       "\n"
       R"( "stands": [)"
       "\n",
-      options.seed, std::thread::hardware_concurrency(), processor_json(this_processor()), parameters_json(options.parameters),
-      options.reference_exact_max, options.reference_culled_max, options.opencl_exact_max, options.subsample);
+      options.seed, std::thread::hardware_concurrency(), processor_json(this_processor()),
+      parameters_json(options.parameters), options.reference_exact_max, options.reference_culled_max,
+      options.opencl_exact_max, options.subsample);
   std::vector<std::string> rows;
   for (std::size_t ball_count : options.ball_counts) rows.push_back(synthetic_row(options, ball_count));
   for (const LightBenchmarkStand& stand : stands) rows.push_back(stand_row(options, stand));
