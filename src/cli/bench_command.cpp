@@ -1,5 +1,6 @@
 #include "cli/bench_command.hpp"
 
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "cli/number_checks.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
+#include "core/usable_memory.hpp"
 #include "io/output_folder.hpp"
 #include "light/light_benchmark.hpp"
 #include "run/established_canopy.hpp"
@@ -76,6 +78,24 @@ struct LightOverrides {
     if (bias_correction->count() > 0) stand.far_field_bias_correction = given.far_field_bias_correction;
   }
 };
+
+// A synthetic canopy far beyond the machine is refused before any canopy is made, with its estimate
+// (light/light_benchmark.hpp), as a run's stand is (stand/memory_estimate.hpp). Nothing is refused when the usable
+// memory cannot be read.
+void refuse_canopies_beyond_this_machine(const std::vector<std::size_t>& ball_counts, const CLI::Option& balls) {
+  const auto usable = usable_memory_bytes();
+  if (!usable) return;
+  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
+  for (std::size_t ball_count : ball_counts) {
+    const std::uint64_t needed = synthetic_canopy_memory_bytes(ball_count);
+    if (needed > *usable)
+      throw CLI::ValidationError(
+          balls.get_name(),
+          fmt::format("{} leaf balls need about {:.1f} GiB (1 GiB + 2 KiB a ball, docs/performance.md \"Memory\"), "
+                      "more than the {:.1f} GiB this machine lets the benchmark use",
+                      ball_count, static_cast<double>(needed) / gib, static_cast<double>(*usable) / gib));
+  }
+}
 
 // `heliostand bench light [--balls N ...] [--stand SCENARIO ...]` (light/light_benchmark.hpp).
 void add_bench_light_command(CLI::App& bench) {
@@ -151,6 +171,7 @@ void add_bench_light_command(CLI::App& bench) {
     // stdout carries the JSON; the progress lines go to the default logger, which writes to stderr at the level
     // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
+    refuse_canopies_beyond_this_machine(options->ball_counts, *balls);
     // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
     std::vector<LightBenchmarkStand> stands;
     for (const auto& scenario : *scenarios) {

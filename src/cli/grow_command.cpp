@@ -36,8 +36,7 @@ int grow(const GrowArguments& arguments) {
   if (arguments.years) scenario.set_years(*arguments.years);
   for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
   // A stand far beyond the machine's memory is refused now, not after hours of growth.
-  const MemoryEstimate memory = estimate_run_memory(scenario);
-  if (const auto usable = usable_memory_bytes()) refuse_beyond_memory(scenario, memory, *usable);
+  refuse_run_beyond_this_machine(scenario);
 
   SimulationOptions options;
   options.output_folder = arguments.out;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -241,6 +242,13 @@ std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmark
 }
 
 }  // namespace
+
+std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count) {
+  constexpr double fixed_bytes = 1024.0 * 1024.0 * 1024.0, bytes_per_ball = 2048.0;  // light_benchmark.hpp
+  const double bytes = fixed_bytes + bytes_per_ball * static_cast<double>(ball_count);
+  constexpr auto largest = std::numeric_limits<std::uint64_t>::max();
+  return bytes >= static_cast<double>(largest) ? largest : static_cast<std::uint64_t>(bytes);
+}
 
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {
   std::string text = fmt::format(

@@ -4,12 +4,14 @@
 
 #include "scenario/scenario.hpp"
 #include "stand/establishment.hpp"
+#include "stand/memory_estimate.hpp"
 
 namespace heliostand {
 
 LightBenchmarkStand established_canopy(const std::filesystem::path& scenario_file) {
   const Scenario scenario = load_scenario(scenario_file);
   for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+  refuse_run_beyond_this_machine(scenario);  // a stand that `grow` would refuse is not established here either
   EstablishmentReport report;
   const std::vector<StandTree> trees = establish_stand(scenario, report);
   spdlog::info("bench light: {} established, {} trees at age {} ({} fitted, {} with crown base off, {} not fitted)",

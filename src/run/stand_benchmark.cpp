@@ -13,6 +13,7 @@
 #include "core/processor.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
+#include "stand/memory_estimate.hpp"
 
 namespace heliostand {
 namespace {
@@ -120,6 +121,7 @@ std::string run_stand_benchmark(const StandBenchmarkOptions& options) {
   if (options.seed) scenario.set_seed(*options.seed);
   if (options.years) scenario.set_years(*options.years);
   for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
+  refuse_run_beyond_this_machine(scenario);  // as `grow` does: before the tables' folder is made
   std::optional<ScratchFolder> scratch;
   if (options.tables_folder.empty()) scratch.emplace();
   SimulationOptions run;

@@ -1,14 +1,9 @@
 #include "stand/memory_estimate.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <fstream>
-
 #include "core/input_error.hpp"
+#include "core/usable_memory.hpp"
 #include "scenario/scenario.hpp"
 
 namespace heliostand {
@@ -19,40 +14,7 @@ constexpr double gib = 1024.0 * mib;
 constexpr double fixed_bytes = 1.0 * gib;        // program, OpenCL runtime, far-field table (memory_estimate.hpp)
 constexpr double bytes_per_tree = 1.75 * mib;    // docs/performance.md, the hectare for 60 years
 
-// cgroup v2 (current systemd, Slurm with cgroup/v2, Docker): "max" or a number of bytes.
-std::optional<std::uint64_t> cgroup_limit() {
-  std::ifstream in("/sys/fs/cgroup/memory.max");
-  std::string text;
-  if (!(in >> text) || text == "max") return std::nullopt;
-  try {
-    return std::stoull(text);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-// `ulimit -v` (batch schedulers such as PBS and Grid Engine set it for a job's memory).
-std::optional<std::uint64_t> address_space_limit() {
-  rlimit limit{};
-  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
-  return static_cast<std::uint64_t>(limit.rlim_cur);
-}
-
-std::optional<std::uint64_t> physical_memory() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page_size = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return std::nullopt;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
-}
-
 }  // namespace
-
-std::optional<std::uint64_t> usable_memory_bytes() {
-  std::optional<std::uint64_t> usable;
-  for (const auto& limit : {physical_memory(), cgroup_limit(), address_space_limit()}) {
-    if (limit) usable = usable ? std::min(*usable, *limit) : *limit;
-  }
-  return usable;
-}
 
 MemoryEstimate estimate_run_memory(const Scenario& scenario) {
   const std::size_t trees = scenario.survey.trees.size();
@@ -68,6 +30,10 @@ void refuse_beyond_memory(const Scenario& scenario, const MemoryEstimate& estima
                                  estimate.trees, static_cast<double>(estimate.bytes) / gib,
                                  static_cast<double>(usable) / gib)}},
                    "key");
+}
+
+void refuse_run_beyond_this_machine(const Scenario& scenario) {
+  if (const auto usable = usable_memory_bytes()) refuse_beyond_memory(scenario, estimate_run_memory(scenario), *usable);
 }
 
 }  // namespace heliostand

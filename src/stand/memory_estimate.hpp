@@ -12,7 +12,6 @@
 // a survey ten times too large, not to budget tightly: a run is refused only when the estimate exceeds the memory it
 // may use.
 #include <cstdint>
-#include <optional>
 #include <string>
 
 namespace heliostand {
@@ -26,12 +25,12 @@ struct MemoryEstimate {
 
 MemoryEstimate estimate_run_memory(const Scenario& scenario);
 
-// The memory this process may use: the least of the machine's physical memory, its cgroup limit (a Slurm job, a
-// container) and its address-space limit (`ulimit -v`). Nothing when none can be read.
-std::optional<std::uint64_t> usable_memory_bytes();
-
 // Throws InputError (the scenario's file, key 'stand.survey') when `estimate` exceeds `usable`, with both figures
 // and the formula.
 void refuse_beyond_memory(const Scenario& scenario, const MemoryEstimate& estimate, std::uint64_t usable);
+
+// `scenario`'s estimate refused when it exceeds the memory this process may use (core/usable_memory.hpp; nothing is
+// refused when that cannot be read): what `grow`, `bench stand` and `bench light --stand` do before any work.
+void refuse_run_beyond_this_machine(const Scenario& scenario);
 
 }  // namespace heliostand
