@@ -1,6 +1,7 @@
 #include "cli/bench_command.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -16,6 +17,7 @@
 #include "light/light_benchmark.hpp"
 #include "run/established_canopy.hpp"
 #include "run/stand_benchmark.hpp"
+#include "scenario/scenario.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -30,6 +32,18 @@ void print_json(const std::string& json, const std::string& output) {
   }
   std::cout << json;
 }
+
+// The -o file is tried before the benchmark runs, so that a mistyped folder is not found out after a ten-minute
+// hectare, its JSON then lost: its temporary is written empty and removed at once (the same "cannot write FILE:
+// REASON" as at the end), and a folder given for the file is refused. Nothing is left behind either way.
+void check_output_writable(const std::string& output) {
+  if (output.empty()) return;
+  std::error_code ignored;
+  if (std::filesystem::is_directory(output, ignored))
+    throw OutputFolderError(fmt::format("cannot write {}: it is a folder (-o takes the JSON file's name)", output));
+  AtomicFile probe(output);
+  probe.write("");
+}  // the probe's temporary is removed here: it was never committed
 
 std::string check_device(const std::string& text) {
   try {
@@ -58,7 +72,10 @@ void add_bench_stand_command(CLI::App& bench) {
   stand->add_option("-o,--output", *output, "Also write the JSON to this file");
   stand->callback([options, output] {
     options->command_line = invoked_command_line();
-    print_json(run_stand_benchmark(*options), *output);
+    // The input first (as `grow`), then the -o file, then the run: each mistake is found before any growth.
+    const Scenario scenario = stand_benchmark_scenario(*options);
+    check_output_writable(*output);
+    print_json(run_stand_benchmark(scenario, *options), *output);
   });
 }
 
@@ -178,6 +195,7 @@ void add_bench_light_command(CLI::App& bench) {
       stands.push_back(established_canopy(scenario));
       overrides->apply(options->parameters, stands.back().parameters);
     }
+    check_output_writable(*output);  // after the input's own checks, before the solvers
     print_json(run_light_benchmark(*options, stands), *output);
   });
 }

@@ -116,12 +116,16 @@ std::size_t peak_resident_bytes() {
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-std::string run_stand_benchmark(const StandBenchmarkOptions& options) {
+Scenario stand_benchmark_scenario(const StandBenchmarkOptions& options) {
   Scenario scenario = load_scenario(options.scenario);
   if (options.seed) scenario.set_seed(*options.seed);
   if (options.years) scenario.set_years(*options.years);
   for (const auto& warning : scenario.survey.warnings) spdlog::warn("{}", warning);
   refuse_run_beyond_this_machine(scenario);  // as `grow` does: before the tables' folder is made
+  return scenario;
+}
+
+std::string run_stand_benchmark(const Scenario& scenario, const StandBenchmarkOptions& options) {
   std::optional<ScratchFolder> scratch;
   if (options.tables_folder.empty()) scratch.emplace();
   SimulationOptions run;

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "scenario/scenario.hpp"
+
 namespace heliostand {
 
 struct StandBenchmarkOptions {
@@ -22,8 +24,12 @@ struct StandBenchmarkOptions {
   std::string command_line;             // recorded in the tables' run.json
 };
 
-// Runs the stand and returns the JSON report; the run's log goes to spdlog (stderr).
-std::string run_stand_benchmark(const StandBenchmarkOptions& options);
+// The scenario of `options` read and checked, its --years and --seed applied, its warnings logged and a stand beyond
+// the machine's memory refused: everything that can be wrong with the input, found before anything is grown or written.
+Scenario stand_benchmark_scenario(const StandBenchmarkOptions& options);
+
+// Grows `scenario` (from stand_benchmark_scenario) and returns the JSON report; the run's log goes to spdlog (stderr).
+std::string run_stand_benchmark(const Scenario& scenario, const StandBenchmarkOptions& options);
 
 // The process's peak resident set so far (getrusage ru_maxrss), bytes.
 std::size_t peak_resident_bytes();

@@ -1,6 +1,7 @@
 // The JSON of `heliostand bench light` and `bench stand` goes to stdout and, with -o, to a file. A file that cannot
 // be written is an error that names it, with a non-zero exit, and then nothing is reported: no JSON on stdout (which
-// a script would take for a result) and no file, whole or half-written.
+// a script would take for a result) and no file, whole or half-written. The file is tried before the benchmark runs,
+// so that a long run's JSON is not lost to a mistyped folder.
 #include <gtest/gtest.h>
 
 #include "cli/cli_runner.hpp"
@@ -25,6 +26,43 @@ TEST(BenchOutputCli, AnUnwritableFileIsAnErrorAndNothingIsReported) {
       << refused.output;
   EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
   EXPECT_FALSE(fs::exists(json.parent_path()));
+}
+
+// The file is tried before the benchmark runs: a mistyped folder must not be found out after a long run, whose JSON
+// would then be lost. The light benchmark's progress lines (not -q) show that no canopy was lit; the stand
+// benchmark's kept tables folder, that no stand was grown.
+TEST(BenchOutputCli, AnUnwritableFileIsRefusedBeforeTheBenchmarkRuns) {
+  const fs::path folder = scratch_folder("bench-output-unwritable-first");
+  fs::create_directories(folder);
+  const fs::path json = folder / "no-such-folder" / "out.json";
+  const std::string cannot_write = "cannot write " + json.string() + ": No such file or directory";
+
+  const CliResult light = run_cli(quick_reference_light_bench + " -o " + json.string());
+  EXPECT_EQ(light.status, 2) << light.output;
+  EXPECT_NE(light.output.find(cannot_write), std::string::npos) << light.output;
+  EXPECT_EQ(light.output.find("bench light: 300 balls"), std::string::npos) << "no canopy lit: " << light.output;
+
+  const fs::path tables = folder / "tables";
+  const std::string stand_flags = " --years 1 --device reference -q --tables " + tables.string();
+  const CliResult stand = run_cli("bench stand " + tiny_bench_stand.string() + stand_flags + " -o " + json.string());
+  EXPECT_EQ(stand.status, 2) << stand.output;
+  EXPECT_NE(stand.output.find(cannot_write), std::string::npos) << stand.output;
+  EXPECT_FALSE(fs::exists(tables)) << "no stand grown";
+  EXPECT_TRUE(fs::is_empty(folder)) << "nothing left behind";
+}
+
+// A folder given where the file belongs (`-o out/`) is refused up front, by name, and left as it was.
+TEST(BenchOutputCli, AFolderGivenForTheFileIsRefused) {
+  const fs::path folder = scratch_folder("bench-output-folder");
+  fs::create_directories(folder);
+  const CliResult refused = run_cli(quick_reference_light_bench + " -o " + folder.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("cannot write " + folder.string() + ": it is a folder"), std::string::npos)
+      << refused.output;
+  EXPECT_EQ(refused.output.find("bench light: 300 balls"), std::string::npos) << "no canopy lit: " << refused.output;
+  EXPECT_TRUE(fs::is_directory(folder));
+  EXPECT_TRUE(fs::is_empty(folder)) << "nothing written into it";
+  EXPECT_FALSE(fs::exists(folder.parent_path() / ("." + folder.filename().string() + ".tmp"))) << "no temporary";
 }
 
 TEST(BenchOutputCli, AWritableFileHoldsTheJsonPrintedAndNoTemporaryIsLeft) {
