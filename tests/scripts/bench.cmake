@@ -28,6 +28,26 @@ add_test(NAME bench.scaling_table
                  --device reference --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling)
 set_tests_properties(bench.scaling_table PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
+# Bad arguments are refused before any stand is grown, with what was wrong and exit 2, and a run that fails (here a
+# device heliostand refuses) ends the script with heliostand's own message and one line of its own, not a Python
+# traceback: before, all three ended in a traceback, the first two only after scaling.py had started.
+add_test(NAME bench.scaling_refuses_a_missing_program
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --heliostand: [^ ]*no-such-heliostand is not a program that can be run"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand ${PROJECT_BINARY_DIR}/no-such-heliostand
+                 --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
+add_test(NAME bench.scaling_refuses_zero_years
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --years: a whole number >= 1 is expected, got 0"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 0
+                 --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
+add_test(NAME bench.scaling_reports_a_failed_run
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=device 'bogus'.*scaling.py: the run above failed \\(exit status 2\\); no table written"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 --device bogus --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
+set_tests_properties(bench.scaling_refuses_a_missing_program bench.scaling_refuses_zero_years
+                     bench.scaling_reports_a_failed_run PROPERTIES LABELS "bench" TIMEOUT 60)
 # The same binary given twice (to see the machine's noise): each of its two tables has the tiny stand's one row
 # ("| 8 | 8 |"), and the ratio table one ("| 8 | " then a ratio); runs filed by path instead of position put both
 # runs in each table. The machine line names the CPU family and model from the runs' JSON (lscpu's model name alone

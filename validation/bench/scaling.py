@@ -23,16 +23,47 @@ PLANTED = [HERE / "stands" / f"planted_{trees}.toml" for trees in (100, 400, 160
 MIB = 1024.0 * 1024.0
 
 
+def whole_years(text):
+    """--years: a whole number of at least 1, as heliostand's own --years."""
+    if not text.isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"a whole number >= 1 is expected, got {text}")
+    return int(text)
+
+
+def program(text):
+    """--heliostand: a program that can be run, found now rather than after the first stand's minutes."""
+    path = Path(text)
+    if not path.is_file() or not os.access(path, os.X_OK):
+        raise argparse.ArgumentTypeError(f"{text} is not a program that can be run")
+    return path
+
+
+def scenario_file(text):
+    """--stand: a file that exists (heliostand itself then checks what is in it)."""
+    path = Path(text)
+    if not path.is_file():
+        raise argparse.ArgumentTypeError(f"{text}: no such file")
+    return path
+
+
 def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--heliostand", action="append", type=Path,
+    parser.add_argument("--heliostand", action="append", type=program,
                         help="heliostand binary (default build/heliostand); twice to compare two builds")
-    parser.add_argument("--years", type=int, default=3, help="years each stand is grown (default 3)")
+    parser.add_argument("--years", type=whole_years, default=3, help="years each stand is grown (default 3)")
     parser.add_argument("--device", help="passed to bench stand (default: the scenarios' device, auto)")
-    parser.add_argument("--stand", action="append", type=Path,
+    parser.add_argument("--stand", action="append", type=scenario_file,
                         help="scenario to run instead of the four planted stands (repeatable)")
     parser.add_argument("--out", type=Path, default=Path("out/bench"), help="folder for the JSON and scaling.md")
-    return parser.parse_args()
+    arguments = parser.parse_args()
+    if not arguments.heliostand:
+        try:
+            arguments.heliostand = [program("build/heliostand")]
+        except argparse.ArgumentTypeError as error:
+            parser.error(f"argument --heliostand: {error} (the default; build first, or name one)")
+    if len(arguments.heliostand) > 2:
+        parser.error("at most two --heliostand binaries")
+    return arguments
 
 
 def machine_line(processor):
@@ -61,7 +92,9 @@ def bench(binary, scenario, years, device, json_path):
     if device:
         command += ["--device", device]
     print("$ " + " ".join(command), file=sys.stderr, flush=True)
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    status = subprocess.run(command, stdout=subprocess.DEVNULL).returncode
+    if status != 0:  # heliostand has said why on stderr, just above: no Python traceback after it
+        sys.exit(f"scaling.py: the run above failed (exit status {status}); no table written")
     return json.loads(json_path.read_text())
 
 
@@ -142,9 +175,7 @@ def ratio_table(labels, rows_a, rows_b):
 
 def main():
     arguments = parse_arguments()
-    binaries = arguments.heliostand or [Path("build/heliostand")]
-    if len(binaries) > 2:
-        sys.exit("at most two --heliostand binaries")
+    binaries = arguments.heliostand
     stands = arguments.stand or PLANTED
     arguments.out.mkdir(parents=True, exist_ok=True)
     started = time.strftime("%Y-%m-%d %H:%M %Z")
