@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "cli/seed_option.hpp"
+#include "compute/compute_backend.hpp"
 #include "compute/device_choice.hpp"
 #include "core/usable_memory.hpp"
 #include "io/output_folder.hpp"
@@ -52,6 +53,31 @@ std::string check_device(const std::string& text) {
   } catch (const std::invalid_argument& e) {
     return std::string(e.what());
   }
+}
+
+// `bench light --device`: an OpenCL device for the OpenCL rows (opencl, opencl:N, or auto, which falls back to the
+// reference where there is none), or none. "reference" is refused: the OpenCL rows would time the reference solvers
+// a second time under OpenCL's names; none runs the reference solvers alone.
+std::string check_light_device(const std::string& text) {
+  if (text == "none") return std::string();
+  try {
+    if (compute::DeviceChoice::parse(text).kind != compute::DeviceChoice::Kind::reference) return std::string();
+    return "device 'reference': the OpenCL rows need an OpenCL device (opencl, opencl:N or auto); none runs the "
+           "reference solvers alone";
+  } catch (const std::invalid_argument&) {
+    return "device '" + text + "': expected opencl, opencl:N (N >= 0), auto or none";
+  }
+}
+
+// The OpenCL device opened before any canopy is made, so that a missing one fails at once rather than after the
+// reference solvers' minutes on a large canopy (exit 1, as `grow` fails on a missing device).
+void open_light_device(const std::string& text) {
+  if (text == "none") return;
+  const auto choice = compute::DeviceChoice::parse(text);
+  if (!compute::opencl_backend_built && choice.kind == compute::DeviceChoice::Kind::opencl)
+    throw std::runtime_error("device '" + text + "': this build of heliostand has no OpenCL backend; --device none "
+                             "runs the reference solvers alone");
+  (void)compute::ComputeBackend::open(choice);
 }
 
 // `heliostand bench stand SCENARIO`: the scenario grown as `grow --no-vtk` grows it, timed (run/stand_benchmark.hpp).
@@ -131,7 +157,10 @@ void add_bench_light_command(CLI::App& bench) {
   light->add_option("--seed", options->seed, "Seed of the synthetic canopies")
       ->check(seed_check())
       ->capture_default_str();
-  light->add_option("--device", options->opencl_device, "OpenCL device for the OpenCL rows: opencl, opencl:N or none")
+  light->add_option("--device", options->opencl_device,
+                    "OpenCL device for the OpenCL rows: opencl, opencl:N, auto (the reference where there is none) or "
+                    "none (the reference solvers alone)")
+      ->check(check_light_device)
       ->capture_default_str();
   const char* overrides_stand = " (synthetic stands; for a --stand, only when given: else its scenario's value)";
   overrides->cutoff = light->add_option("--cutoff", options->parameters.cutoff_m,
@@ -189,6 +218,7 @@ void add_bench_light_command(CLI::App& bench) {
     // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
     refuse_canopies_beyond_this_machine(options->ball_counts, *balls);
+    open_light_device(options->opencl_device);
     // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
     std::vector<LightBenchmarkStand> stands;
     for (const auto& scenario : *scenarios) {
