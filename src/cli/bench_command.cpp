@@ -69,7 +69,7 @@ std::string check_light_device(const std::string& text) {
   }
 }
 
-// The OpenCL device opened before any canopy is made, so that a missing one fails at once rather than after the
+// The OpenCL device opened before any canopy is lit, so that a missing one fails at once rather than after the
 // reference solvers' minutes on a large canopy (exit 1, as `grow` fails on a missing device).
 void open_light_device(const std::string& text) {
   if (text == "none") return;
@@ -218,14 +218,15 @@ void add_bench_light_command(CLI::App& bench) {
     // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
     refuse_canopies_beyond_this_machine(options->ball_counts, *balls);
-    open_light_device(options->opencl_device);
     // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
     std::vector<LightBenchmarkStand> stands;
     for (const auto& scenario : *scenarios) {
       stands.push_back(established_canopy(scenario));
       overrides->apply(options->parameters, stands.back().parameters);
     }
-    check_output_writable(*output);  // after the input's own checks, before the solvers
+    // After the input's own checks (a bad scenario is the error named first), before the solvers:
+    open_light_device(options->opencl_device);
+    check_output_writable(*output);
     print_json(run_light_benchmark(*options, stands), *output);
   });
 }

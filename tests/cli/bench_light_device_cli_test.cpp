@@ -45,6 +45,15 @@ TEST(BenchLightDeviceCli, AMissingDeviceFailsBeforeAnyCanopyIsLit) {
   EXPECT_EQ(failed.output.find("\"benchmark\""), std::string::npos) << "no JSON: " << failed.output;
 }
 
+// The input first: with both a scenario that does not exist and a device that does not, the scenario is the error
+// named (as it is in the build without OpenCL, where the default device is the missing one).
+TEST(BenchLightDeviceCli, ABadScenarioIsNamedBeforeAMissingDevice) {
+  const std::string missing = (scratch_folder("bench-light-device-order") / "no_such_scenario.toml").string();
+  const CliResult refused = run_cli("bench light --stand " + missing + " --device opencl:99");
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find(missing), std::string::npos) << refused.output;
+}
+
 TEST(BenchLightDeviceCli, NoneRunsTheReferenceSolversAlone) {
   const CliResult run = run_cli(reference_rows + " --device none");
   ASSERT_EQ(run.status, 0) << run.output;
