@@ -47,7 +47,13 @@ void write_whole_file(const fs::path& path, std::string_view contents, const fs:
   if (!out) throw cannot_write(final_path, errno);
 }
 
-void AtomicFile::write(std::string_view contents) const { write_whole_file(temporary_, contents, final_); }
+void AtomicFile::write(std::string_view contents) const {
+  // A folder where the file belongs would only fail at commit(), as a rename naming the hidden temporary.
+  std::error_code ignored;
+  if (fs::is_directory(final_, ignored))
+    throw OutputFolderError(fmt::format("cannot write {}: it is a folder, not a file", final_.string()));
+  write_whole_file(temporary_, contents, final_);
+}
 
 void AtomicFile::commit() {
   if (committed_) return;

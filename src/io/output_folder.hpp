@@ -55,7 +55,8 @@ class AtomicFile {
 
   // Writes `contents` as the whole temporary file. If it cannot be written, throws OutputFolderError
   // "cannot write FINAL_PATH: REASON", naming the file the user asked for (not its temporary) and the system's
-  // reason, or that the write stopped short where the system gave none.
+  // reason, or that the write stopped short where the system gave none; "cannot write FINAL_PATH: it is a folder, not
+  // a file" when a folder stands where the file belongs (before anything is written).
   void write(std::string_view contents) const;
   void commit();   // rename temporary → final (replacing an older final file)
 

@@ -137,5 +137,23 @@ TEST(AtomicFile, AFileThatCannotBeWrittenIsAnErrorNamingItAndTheReason) {
   EXPECT_FALSE(fs::exists(target));
 }
 
+// A folder where the file belongs is refused by name before anything is written, instead of failing at commit() as
+// a rename of the hidden temporary; the folder is left as it was.
+TEST(AtomicFile, AFolderWhereTheFileBelongsIsRefusedBeforeAnythingIsWritten) {
+  testing::TempFolder tmp("atomic_folder");
+  const fs::path target = tmp.path() / "light.json";
+  fs::create_directories(target);
+  AtomicFile file(target);
+  try {
+    file.write("{}");
+    FAIL() << "expected an error";
+  } catch (const OutputFolderError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write " + target.string() + ": it is a folder, not a file");
+  }
+  EXPECT_FALSE(fs::exists(file.temporary_path()));
+  EXPECT_TRUE(fs::is_directory(target));
+  EXPECT_TRUE(fs::is_empty(target));
+}
+
 }  // namespace
 }  // namespace heliostand
