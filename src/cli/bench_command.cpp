@@ -161,11 +161,11 @@ void add_bench_light_command(CLI::App& bench) {
   const char* overrides_stand = " (synthetic stands; for a --stand, only when given: else its scenario's value)";
   overrides->cutoff = light->add_option("--cutoff", options->parameters.cutoff_m,
                                         std::string("Near-field cut-off, m") + overrides_stand)
-                          ->check(positive_amount_check())
+                          ->check(positive_amount_check(max_light_distance_m))
                           ->capture_default_str();
   overrides->far_field_cell = light->add_option("--far-field-cell", options->parameters.far_field_cell_m,
                                                 std::string("Far-field voxel edge, m") + overrides_stand)
-                                  ->check(positive_amount_check())
+                                  ->check(positive_amount_check(max_light_distance_m))
                                   ->capture_default_str();
   overrides->hand_over =
       light->add_option("--far-field-hand-over", options->parameters.far_field_hand_over_cells,

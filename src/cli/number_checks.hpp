@@ -42,14 +42,17 @@ inline CLI::Validator whole_number_check(unsigned long long minimum = 1) {
       "N >= " + std::to_string(minimum));
 }
 
-// An amount: a finite number above 0 ("--cutoff: a number > 0 is expected, got -1").
-inline CLI::Validator positive_amount_check() {
+// An amount above 0 and at most `maximum` ("--cutoff: a number in (0, 1000] is expected, got 2000"), written as the
+// scenario's check writes the same range.
+inline CLI::Validator positive_amount_check(double maximum) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [maximum](std::string& value) -> std::string {
         const std::optional<double> number = finite_amount(value);
-        return number && *number > 0.0 ? std::string{} : "a number > 0 is expected, got " + value;
+        return number && *number > 0.0 && *number <= maximum
+                   ? std::string{}
+                   : fmt::format("a number in (0, {}] is expected, got {}", maximum, value);
       },
-      "X > 0");
+      fmt::format("X in (0, {}]", maximum));
 }
 
 // A count within limits ("--evaluations: a whole number in 1..1000 is expected, got 0").

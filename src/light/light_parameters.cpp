@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace heliostand {
 namespace {
 
@@ -22,8 +24,9 @@ void validate(const LightParameters& p) {
   require(p.sky_scale > 0, "sky_scale", "expected a number > 0");
   require(p.transmittance > 0 && p.transmittance <= 1, "transmittance", "expected a number in (0, 1]");
   require(p.ground_albedo >= 0 && p.ground_albedo <= 1, "ground_albedo", "expected a number in 0..1");
-  require(p.cutoff_m > 0, "cutoff_m", "expected a distance > 0 m");
-  require(p.far_field_cell_m > 0, "far_field_cell_m", "expected a distance > 0 m");
+  const std::string distance = fmt::format("expected a distance in (0, {}] m", max_light_distance_m);
+  require(p.cutoff_m > 0 && p.cutoff_m <= max_light_distance_m, "cutoff_m", distance);
+  require(p.far_field_cell_m > 0 && p.far_field_cell_m <= max_light_distance_m, "far_field_cell_m", distance);
   require(p.far_field_hand_over_cells >= 0 && p.far_field_hand_over_cells <= max_far_field_hand_over_cells,
           "far_field_hand_over_cells",
           "expected a number of cell edges in 0.." + std::to_string(max_far_field_hand_over_cells));

@@ -99,7 +99,8 @@ inline constexpr ScenarioLimit intensity_ratio{1000, "C2 = C1/L: from L = 1000 t
                                                      "of the sky's (seed 000: 1.5)"};
 inline constexpr ScenarioLimit sky_scale{10, "seed 003's experiments dim the sky to x0.5 and x0.7; x10 is ten full "
                                              "skies"};
-inline constexpr ScenarioLimit light_distance_m{1000, "1 km is wider than any stand grown leaf ball by leaf ball"};
+inline constexpr ScenarioLimit light_distance_m{max_light_distance_m,
+                                                "1 km is wider than any stand grown leaf ball by leaf ball"};
 inline constexpr ScenarioLimit far_field_table_mb{1e6, "a terabyte is more memory than any machine this runs on"};
 inline constexpr ScenarioLimit coupling_coefficient{1000, "only the ratio of rho and tau matters, and from 1000 every "
                                                           "path's balance is pinned at its clamp"};

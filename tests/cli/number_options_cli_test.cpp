@@ -28,11 +28,11 @@ TEST(NumberChecks, ALimitMayBeZeroButNeverNegative) {
     EXPECT_EQ(check(whole_number_check(0), bad), "a whole number >= 0 is expected, got " + bad) << bad;
 }
 
-TEST(NumberChecks, AnAmountIsAFiniteNumberAboveZero) {
-  for (const std::string good : {"3", "0.5", "1e-3", "2.5e1"})
-    EXPECT_EQ(check(positive_amount_check(), good), "") << good;
-  for (const std::string bad : {"0", "-0", "-1", "inf", "nan", "1e999", "abc", "", "1x", "3 "})
-    EXPECT_EQ(check(positive_amount_check(), bad), "a number > 0 is expected, got " + bad) << bad;
+TEST(NumberChecks, AnAmountUpToAMaximumIsAboveZeroFiniteAndIncludesTheMaximum) {
+  for (const std::string good : {"1000", "0.5", "1e-3", "1e3"})
+    EXPECT_EQ(check(positive_amount_check(1000), good), "") << good;
+  for (const std::string bad : {"0", "-0", "-1", "1000.001", "1e160", "1e999", "inf", "nan", "abc", "", "1x", "3 "})
+    EXPECT_EQ(check(positive_amount_check(1000), bad), "a number in (0, 1000] is expected, got " + bad) << bad;
 }
 
 TEST(NumberChecks, ACountWithinLimitsIncludesBoth) {
@@ -52,8 +52,9 @@ TEST(NumberChecks, AnAmountWithinLimitsIncludesBothAndIsFinite) {
 TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
   const std::string tiny = source_path("stands/tiny/scenario.toml").string();
   const std::string out = (std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / "number-options").string();
-  const std::string count = "a whole number >= 1 is expected, got ", amount = "a number > 0 is expected, got ";
+  const std::string count = "a whole number >= 1 is expected, got ";
   const std::string limit = "a whole number >= 0 is expected, got ";
+  const std::string distance = "a number in (0, 1000] is expected, got ";  // the scenario's [light] limit
   struct Case {
     std::string arguments, refusal;
   };
@@ -69,8 +70,10 @@ TEST(NumberOptionsCli, EachCountAndAmountOptionSaysWhatItExpectsAndWhatItGot) {
       {"bench light --balls 10 --reference-exact-max -1", "--reference-exact-max: " + limit + "-1"},
       {"bench light --balls 10 --reference-culled-max -1", "--reference-culled-max: " + limit + "-1"},
       {"bench light --balls 10 --opencl-exact-max 2.5", "--opencl-exact-max: " + limit + "2.5"},
-      {"bench light --balls 10 --cutoff 0", "--cutoff: " + amount + "0"},
-      {"bench light --balls 10 --far-field-cell inf", "--far-field-cell: " + amount + "inf"},
+      {"bench light --balls 10 --cutoff 0", "--cutoff: " + distance + "0"},
+      {"bench light --balls 10 --cutoff 1e160", "--cutoff: " + distance + "1e160"},
+      {"bench light --balls 10 --far-field-cell inf", "--far-field-cell: " + distance + "inf"},
+      {"bench light --balls 10 --far-field-cell 1000.5", "--far-field-cell: " + distance + "1000.5"},
       {"bench light --balls 10 --evaluations 0", "--evaluations: a whole number in 1..1000 is expected, got 0"},
       {"bench light --balls 10 --far-field-hand-over 99", "--far-field-hand-over: a number in 0..4 is expected, got 99"},
       {"bench light --balls 10 --far-field-hand-over nan", "--far-field-hand-over: a number in 0..4 is expected, got nan"},
