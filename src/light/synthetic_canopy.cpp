@@ -9,7 +9,13 @@ namespace heliostand {
 
 SyntheticCanopy make_synthetic_canopy(std::size_t ball_count, std::uint64_t seed, const SyntheticCanopyShape& shape) {
   SyntheticCanopy canopy;
-  const std::size_t wanted_trees = std::max<std::size_t>(1, (ball_count + shape.balls_per_tree - 1) / shape.balls_per_tree);
+  // The balls' room first: a count beyond any memory throws here, before the crowns (2^59 balls' crowns alone would
+  // be drawn for days).
+  canopy.balls.reserve(ball_count);
+  canopy.tree_of_ball.reserve(ball_count);
+  // Rounded up after the division, so that no count near 2^64 wraps to a single tree.
+  const std::size_t per_tree = shape.balls_per_tree;
+  const std::size_t wanted_trees = std::max<std::size_t>(1, ball_count / per_tree + (ball_count % per_tree != 0));
   const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(double(wanted_trees))));
   canopy.tree_count = side * side;
   canopy.plot_size_m = side * shape.spacing_m;
@@ -26,7 +32,6 @@ SyntheticCanopy make_synthetic_canopy(std::size_t ball_count, std::uint64_t seed
     const double scale = 1.0 + 0.15 * random.symmetric();
     crowns.push_back({{x, y, shape.height_m * scale}, shape.crown_length_m * scale, shape.crown_radius_m * scale});
   }
-  canopy.balls.reserve(ball_count);
   for (std::size_t k = 0; k < ball_count; ++k) {
     const std::size_t tree = k % canopy.tree_count;
     const Crown& crown = crowns[tree];
