@@ -292,6 +292,26 @@ TEST(GrowCli, AnImpossibleSurveyHeightIsBadInputNotACrash) {
   EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
 }
 
+// A far-field table allowed a terabyte (the scenario's limit): with 2 cm cells the run wrote its tables' headers and
+// then failed with "error: clCreateBuffer" (exit 1) on a 24 GiB machine, or would have filled a larger one. No
+// machine the tests run on holds the 1.8 TiB estimate, so grow refuses the cap before any output, whatever the cells.
+// (The default 1 m cells here: were the refusal lost, the tiny stand would grow, and this test fail, in seconds.)
+TEST(GrowCli, AFarFieldTableCapBeyondTheMachineIsRefusedBeforeAnyOutput) {
+  const auto stand = scratch_folder("huge_table_stand");
+  fs::create_directories(stand);
+  std::string scenario = read_text(source_path("stands/tiny/scenario.toml"));
+  scenario.replace(scenario.find("[light]\n"), 8, "[light]\nfar_field_table_mb = 1000000\n");
+  std::ofstream(stand / "scenario.toml") << scenario;
+  fs::copy_file(source_path("stands/tiny/survey.csv"), stand / "survey.csv");
+  const auto folder = scratch_folder("huge_table_out");
+  const auto run = run_cli("grow " + (stand / "scenario.toml").string() + " --out " + folder.string());
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to 1000000 MB"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for bad input";
+}
+
 TEST(GrowCli, UnknownDeviceIsBadInputAndMissingDeviceWritesNothing) {
   const auto folder = scratch_folder("tiny_bad_device");
   const auto malformed = run_cli("grow " + tiny_scenario + " --out " + folder.string() + " --device gpu");
