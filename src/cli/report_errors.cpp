@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "cli/commands.hpp"
+#include "compute/failure_message.hpp"
 #include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 
@@ -19,8 +20,8 @@ int report_errors(const std::function<int()>& body) {
   } catch (const OutputFolderError& e) {  // a refused --out folder is a usage mistake, not a failure
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+  } catch (const std::exception& e) {  // a failure while running (an OpenCL call, memory): said in words
+    fmt::print(stderr, "error: {}\n", compute::failure_message(e));
     return 1;
   }
 }
