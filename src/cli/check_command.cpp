@@ -4,7 +4,9 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "core/usable_memory.hpp"
 #include "scenario/scenario.hpp"
+#include "stand/memory_estimate.hpp"
 #include "stand/thinning.hpp"
 
 namespace heliostand::cli {
@@ -24,6 +26,18 @@ std::string when_text(const ThinningEvent& event) {
     when += event.at_fixed_age() ? fmt::format(", then every {} years", *event.repeat_every_years)
                                  : fmt::format(", again after {} years or more", *event.repeat_every_years);
   return when;
+}
+
+// The run's memory as `grow` estimates it, beside what this machine lets a run use. A scenario written for a larger
+// machine is not bad input, so check says that grow would refuse it here and still succeeds.
+void print_memory(const Scenario& scenario) {
+  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
+  const MemoryEstimate estimate = estimate_run_memory(scenario);
+  std::string line = fmt::format("memory     about {:.1f} GiB estimated", static_cast<double>(estimate.bytes) / gib);
+  if (const auto usable = usable_memory_bytes())
+    line += fmt::format(", of the {:.1f} GiB this machine lets a run use{}", static_cast<double>(*usable) / gib,
+                        estimate.bytes > *usable ? ": grow refuses it here" : "");
+  fmt::print("{} (docs/performance.md \"Memory\")\n", line);
 }
 
 void print_summary(const Scenario& scenario) {
@@ -49,6 +63,7 @@ void print_summary(const Scenario& scenario) {
   }
   if (!habitat.empty())
     fmt::print("habitat    {} trees with {} hollows: {}\n", habitat.size(), hollows, fmt::join(habitat, ", "));
+  print_memory(scenario);
 }
 
 }  // namespace

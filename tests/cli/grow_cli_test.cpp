@@ -296,6 +296,7 @@ TEST(GrowCli, AnImpossibleSurveyHeightIsBadInputNotACrash) {
 // then failed with "error: clCreateBuffer" (exit 1) on a 24 GiB machine, or would have filled a larger one. No
 // machine the tests run on holds the 1.8 TiB estimate, so grow refuses the cap before any output, whatever the cells.
 // (The default 1 m cells here: were the refusal lost, the tiny stand would grow, and this test fail, in seconds.)
+// `check` reads the same scenario as good input and says that grow refuses it here.
 TEST(GrowCli, AFarFieldTableCapBeyondTheMachineIsRefusedBeforeAnyOutput) {
   const auto stand = scratch_folder("huge_table_stand");
   fs::create_directories(stand);
@@ -303,6 +304,12 @@ TEST(GrowCli, AFarFieldTableCapBeyondTheMachineIsRefusedBeforeAnyOutput) {
   scenario.replace(scenario.find("[light]\n"), 8, "[light]\nfar_field_table_mb = 1000000\n");
   std::ofstream(stand / "scenario.toml") << scenario;
   fs::copy_file(source_path("stands/tiny/survey.csv"), stand / "survey.csv");
+  // check reads a scenario written for another machine as good input, and says what grow would do here
+  const auto check = run_cli("check " + (stand / "scenario.toml").string());
+  EXPECT_EQ(check.status, 0) << check.output;
+  EXPECT_NE(check.output.find("memory     about 1862.7 GiB estimated, of the "), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("GiB this machine lets a run use: grow refuses it here"), std::string::npos)
+      << check.output;
   const auto folder = scratch_folder("huge_table_out");
   const auto run = run_cli("grow " + (stand / "scenario.toml").string() + " --out " + folder.string());
   EXPECT_EQ(run.status, 2) << run.output;
@@ -373,6 +380,9 @@ TEST(CheckCli, GoodScenarioPrintsASummary) {
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("62 trees"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("habitat    3 trees with 3 hollows: S15, S20, S22"), std::string::npos) << run.output;
+  // grow's estimate (1 GiB + 62 x 1.75 MiB), which every machine the tests run on holds
+  EXPECT_NE(run.output.find("memory     about 1.1 GiB estimated, of the "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("grow refuses it here"), std::string::npos) << run.output;
 }
 
 TEST(CheckCli, BadKeysAreListedWithTheirPathAndExitTwo) {
