@@ -124,15 +124,14 @@ struct LightOverrides {
 void refuse_canopies_beyond_this_machine(const std::vector<std::size_t>& ball_counts, const CLI::Option& balls) {
   const auto usable = usable_memory_bytes();
   if (!usable) return;
-  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   for (std::size_t ball_count : ball_counts) {
     const std::uint64_t needed = synthetic_canopy_memory_bytes(ball_count);
     if (needed > *usable)
       throw CLI::ValidationError(
           balls.get_name(),
-          fmt::format("{} leaf balls need about {:.1f} GiB (1 GiB + 2 KiB a ball, docs/performance.md \"Memory\"), "
-                      "more than the {:.1f} GiB this machine lets the benchmark use",
-                      ball_count, static_cast<double>(needed) / gib, static_cast<double>(*usable) / gib));
+          fmt::format("{} leaf balls need about {} (1 GiB + 2 KiB a ball, docs/performance.md \"Memory\"), more "
+                      "than the {} this machine lets the benchmark use",
+                      ball_count, gibibytes(needed), gibibytes(*usable)));
   }
 }
 

@@ -31,11 +31,10 @@ std::string when_text(const ThinningEvent& event) {
 // The run's memory as `grow` estimates it, beside what this machine lets a run use. A scenario written for a larger
 // machine is not bad input, so check says that grow would refuse it here and still succeeds.
 void print_memory(const Scenario& scenario) {
-  constexpr double gib = 1024.0 * 1024.0 * 1024.0;
   const MemoryEstimate estimate = estimate_run_memory(scenario);
-  std::string line = fmt::format("memory     about {:.1f} GiB estimated", static_cast<double>(estimate.bytes) / gib);
+  std::string line = fmt::format("memory     about {} estimated", gibibytes(estimate.bytes));
   if (const auto usable = usable_memory_bytes())
-    line += fmt::format(", of the {:.1f} GiB this machine lets a run use{}", static_cast<double>(*usable) / gib,
+    line += fmt::format(", of the {} this machine lets a run use{}", gibibytes(*usable),
                         estimate.bytes > *usable ? ": grow refuses it here" : "");
   fmt::print("{} (docs/performance.md \"Memory\")\n", line);
 }

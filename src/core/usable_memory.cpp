@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace heliostand {
 namespace {
 
@@ -43,6 +45,10 @@ std::optional<std::uint64_t> usable_memory_bytes() {
     if (limit) usable = usable ? std::min(*usable, *limit) : *limit;
   }
   return usable;
+}
+
+std::string gibibytes(std::uint64_t bytes) {
+  return fmt::format("{:.1f} GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
 }
 
 }  // namespace heliostand

@@ -5,11 +5,15 @@
 // (light/light_benchmark.hpp).
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace heliostand {
 
 // The least of the machine's physical memory, its cgroup limit (a Slurm job, a container) and its address-space
 // limit (`ulimit -v`). Nothing when none can be read.
 std::optional<std::uint64_t> usable_memory_bytes();
+
+// "23.5 GiB": how the refusals and `check` write an estimate and the usable memory, one decimal.
+std::string gibibytes(std::uint64_t bytes);
 
 }  // namespace heliostand

@@ -23,8 +23,6 @@ double far_field_table_bytes(const LightParameters& light) {
   return table_layouts * (light.far_field_table_mb - default_table_mb) * 1e6;
 }
 
-std::string gibibytes(std::uint64_t bytes) { return fmt::format("{:.1f} GiB", static_cast<double>(bytes) / gib); }
-
 }  // namespace
 
 MemoryEstimate estimate_run_memory(const Scenario& scenario) {
