@@ -8,9 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
-#include <thread>
-#include <vector>
 
+#include "core/parallel_for.hpp"
 #include "core/seconds_since.hpp"
 
 namespace heliostand {
@@ -69,10 +68,7 @@ void run_worker_pool(std::size_t count, unsigned workers, const std::string& lab
       progress.finished(report);
     }
   };
-  std::vector<std::thread> threads;
-  const unsigned thread_count = std::max(1u, std::min<unsigned>(workers, static_cast<unsigned>(count)));
-  for (unsigned t = 0; t < thread_count; ++t) threads.emplace_back(work);
-  for (std::thread& thread : threads) thread.join();
+  run_on_threads(std::max<std::size_t>(1, std::min<std::size_t>(workers, count)), work);
 }
 
 }  // namespace heliostand

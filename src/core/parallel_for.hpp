@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -18,6 +19,24 @@ unsigned worker_threads();
 // answers do not depend on it.
 void set_worker_threads(unsigned threads);
 
+// Runs `work` on `workers` threads at once, the calling thread one of them, and returns when every one has returned.
+// `work` takes its share itself (each caller here draws indices from one atomic counter until none are left), so
+// fewer threads do the same work: where the process may start no more threads (its limit of processes, or of address
+// space for their stacks, e.g. `--threads 100000`), the ones started share it, instead of the std::thread objects
+// left unjoined ending the program (std::terminate).
+template <typename Work>
+void run_on_threads(std::size_t workers, Work work) {
+  std::vector<std::jthread> helpers;
+  for (std::size_t w = 1; w < workers; ++w) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: the ones running, and this one, share the work
+    }
+  }
+  work();
+}  // the helpers join here
+
 template <typename Body>
 void parallel_for(std::size_t count, Body body) {
   const std::size_t workers = std::min<std::size_t>(count, worker_threads());
@@ -28,19 +47,16 @@ void parallel_for(std::size_t count, Body body) {
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  std::vector<std::thread> threads;
-  for (std::size_t w = 0; w < workers; ++w)
-    threads.emplace_back([&] {
-      for (std::size_t i = next++; i < count; i = next++) {
-        try {
-          body(i);
-        } catch (...) {
-          std::lock_guard lock(failure_mutex);
-          if (!failure) failure = std::current_exception();
-        }
+  run_on_threads(workers, [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        body(i);
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
       }
-    });
-  for (auto& thread : threads) thread.join();
+    }
+  });
   if (failure) std::rethrow_exception(failure);
 }
 
