@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "address_sanitizer.hpp"
 #include "cli/cli_runner.hpp"
 #include "core/seconds_since.hpp"
 #include "scenario/scenario_limit_cases.hpp"
@@ -15,18 +16,6 @@ namespace heliostand::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool address_sanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool address_sanitizer = true;
-#else
-constexpr bool address_sanitizer = false;
-#endif
-#else
-constexpr bool address_sanitizer = false;
-#endif
 
 // A run of the three-tree stand takes 1-3 s; the slowest key at its limit (stand.age_at_survey) 50-95 s on the shared
 // machine (18 s on a quiet one), several times that under the sanitizers. Past this a run hangs as far as this test

@@ -10,6 +10,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "address_sanitizer.hpp"
+
 namespace heliostand {
 namespace {
 
@@ -56,18 +58,6 @@ TEST_F(ParallelFor, AFailureInOneIterationReachesTheCaller) {
                std::runtime_error);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool address_sanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool address_sanitizer = true;
-#else
-constexpr bool address_sanitizer = false;
-#endif
-#else
-constexpr bool address_sanitizer = false;
-#endif
-
 // Leaves this process `headroom` bytes of address space beyond what it maps now: a thread's stack (megabytes) is
 // mapped from it, so only a few more threads can start.
 void limit_address_space(std::size_t headroom) {
@@ -83,7 +73,7 @@ void limit_address_space(std::size_t headroom) {
 // process limit of 2 000 (`ulimit -u`, as on shared clusters) aborted with "terminate called without an active
 // exception" (exit 134). Exit 2 here says the limit did not bite, so the test would prove nothing.
 TEST_F(ParallelFor, WhereNoMoreThreadsCanStartTheOnesRunningDoEveryIteration) {
-  if (address_sanitizer) GTEST_SKIP() << "ASan reserves terabytes of address space: no limit on it can be set";
+  if (testing::address_sanitizer) GTEST_SKIP() << "ASan reserves terabytes of address space: no limit on it can be set";
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
       {
