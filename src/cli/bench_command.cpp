@@ -129,9 +129,9 @@ void refuse_canopies_beyond_this_machine(const std::vector<std::size_t>& ball_co
     if (needed > *usable)
       throw CLI::ValidationError(
           balls.get_name(),
-          fmt::format("{} leaf balls need about {} (1 GiB + 2 KiB a ball, docs/performance.md \"Memory\"), more "
-                      "than the {} this machine lets the benchmark use",
-                      ball_count, gibibytes(needed), gibibytes(*usable)));
+          fmt::format("{} leaf balls need about {} ({}, docs/performance.md \"Memory\"), more than the {} this "
+                      "machine lets the benchmark use",
+                      ball_count, gibibytes(needed), synthetic_canopy_memory_formula(), gibibytes(*usable)));
   }
 }
 

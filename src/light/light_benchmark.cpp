@@ -243,11 +243,19 @@ std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmark
 
 }  // namespace
 
+namespace {
+constexpr double canopy_fixed_bytes = 1024.0 * 1024.0 * 1024.0, canopy_bytes_per_ball = 2048.0;  // the header
+}  // namespace
+
 std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count) {
-  constexpr double fixed_bytes = 1024.0 * 1024.0 * 1024.0, bytes_per_ball = 2048.0;  // light_benchmark.hpp
-  const double bytes = fixed_bytes + bytes_per_ball * static_cast<double>(ball_count);
+  const double bytes = canopy_fixed_bytes + canopy_bytes_per_ball * static_cast<double>(ball_count);
   constexpr auto largest = std::numeric_limits<std::uint64_t>::max();
   return bytes >= static_cast<double>(largest) ? largest : static_cast<std::uint64_t>(bytes);
+}
+
+std::string synthetic_canopy_memory_formula() {
+  return fmt::format("{:g} GiB + {:g} KiB a ball", canopy_fixed_bytes / (1024.0 * 1024.0 * 1024.0),
+                     canopy_bytes_per_ball / 1024.0);
 }
 
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {

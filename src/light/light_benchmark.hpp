@@ -49,6 +49,9 @@ struct LightBenchmarkStand {
 // tight budget. Saturates at the largest std::uint64_t.
 std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count);
 
+// The estimate's formula in words, from the same constants ("1 GiB + 2 KiB a ball"), for the refusal.
+std::string synthetic_canopy_memory_formula();
+
 // Runs the benchmark on the synthetic canopies of `options.ball_counts` (with `options.parameters`), then on each
 // of `stands` (with its own parameters), and returns the JSON report; progress goes to spdlog (stderr).
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands = {});

@@ -23,6 +23,13 @@ double far_field_table_bytes(const LightParameters& light) {
   return table_layouts * (light.far_field_table_mb - default_table_mb) * 1e6;
 }
 
+// The formula in words, from the constants above, for the refusals: "1 GiB + 1.75 MiB per tree[ + twice ...]".
+std::string formula(bool with_table) {
+  return fmt::format("{:g} GiB + {:g} MiB per tree{}", fixed_bytes / gib, bytes_per_tree / mib,
+                     with_table ? fmt::format(" + twice the far-field table's cap above {:g} MB", default_table_mb)
+                                : "");
+}
+
 }  // namespace
 
 MemoryEstimate estimate_run_memory(const Scenario& scenario) {
@@ -37,20 +44,17 @@ void refuse_beyond_memory(const Scenario& scenario, const MemoryEstimate& estima
   const std::string file = scenario.file.string();
   if (estimate.far_field_table_bytes > 0 && estimate.bytes - estimate.far_field_table_bytes <= usable)
     throw InputError({{file, 0, "light.far_field_table_mb",
-                       fmt::format("a far-field table of up to {} MB brings the run to about {} (1 GiB + 1.75 MiB "
-                                   "per tree + twice the table's cap above 512 MB, docs/performance.md \"Memory\"), "
-                                   "more than the {} this machine lets the run use: lower it (the far field's cells "
-                                   "grow coarser instead)",
-                                   scenario.light.far_field_table_mb, gibibytes(estimate.bytes), gibibytes(usable))}},
+                       fmt::format("a far-field table of up to {} MB brings the run to about {} ({}, "
+                                   "docs/performance.md \"Memory\"), more than the {} this machine lets the run use: "
+                                   "lower it (the far field's cells grow coarser instead)",
+                                   scenario.light.far_field_table_mb, gibibytes(estimate.bytes), formula(true),
+                                   gibibytes(usable))}},
                      "key");
   throw InputError({{file, 0, "stand.survey",
-                     fmt::format("{} trees need about {} (1 GiB + 1.75 MiB per tree{}, docs/performance.md "
-                                 "\"Memory\"), more than the {} this machine lets the run use: grow the stand in "
-                                 "parts, or on a larger machine",
+                     fmt::format("{} trees need about {} ({}, docs/performance.md \"Memory\"), more than the {} "
+                                 "this machine lets the run use: grow the stand in parts, or on a larger machine",
                                  estimate.trees, gibibytes(estimate.bytes),
-                                 estimate.far_field_table_bytes > 0 ? " + twice the far-field table's cap above 512 MB"
-                                                                    : "",
-                                 gibibytes(usable))}},
+                                 formula(estimate.far_field_table_bytes > 0), gibibytes(usable))}},
                    "key");
 }
 

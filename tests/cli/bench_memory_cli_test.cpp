@@ -22,7 +22,8 @@ TEST(BenchMemoryCli, ACanopyBeyondEveryMachineIsRefusedBeforeAnyCanopyIsMade) {
   // Beside a canopy the machine holds (the quick benchmark's 300 balls), and after it: nothing runs, not even that.
   const CliResult refused = run_cli(quick_reference_light_bench + " --balls 18446744073709551615 -o " + json.string());
   EXPECT_EQ(refused.status, 2) << refused.output;
-  EXPECT_NE(refused.output.find("--balls: 18446744073709551615 leaf balls need about 17179869184.0 GiB"),
+  EXPECT_NE(refused.output.find("--balls: 18446744073709551615 leaf balls need about 17179869184.0 GiB (1 GiB + 2 KiB "
+                                "a ball, docs/performance.md \"Memory\")"),
             std::string::npos)
       << refused.output;
   EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;

@@ -31,7 +31,10 @@ TEST(MemoryEstimate, AStandBeyondTheMachineIsRefusedWithTheEstimate) {
     FAIL() << "an estimate above the usable memory must be refused";
   } catch (const InputError& error) {
     const std::string message = error.problems().at(0).format(error.field_kind());
-    EXPECT_NE(message.find("key 'stand.survey': 8 trees need about 1.0 GiB"), std::string::npos) << message;
+    EXPECT_NE(message.find("key 'stand.survey': 8 trees need about 1.0 GiB (1 GiB + 1.75 MiB per tree, "
+                           "docs/performance.md \"Memory\")"),
+              std::string::npos)
+        << message;
     EXPECT_NE(message.find("than the 1.0 GiB"), std::string::npos) << message;
   }
 }
@@ -66,7 +69,8 @@ TEST(MemoryEstimate, ATableCapBeyondTheMachineIsRefusedUnderItsOwnKey) {
   };
   const std::string cap = refusal(24 * gib);
   EXPECT_NE(cap.find("key 'light.far_field_table_mb': a far-field table of up to 1000000 MB brings the run to about "
-                     "1862.7 GiB"),
+                     "1862.7 GiB (1 GiB + 1.75 MiB per tree + twice the far-field table's cap above 512 MB, "
+                     "docs/performance.md \"Memory\")"),
             std::string::npos)
       << cap;
   EXPECT_NE(cap.find("than the 24.0 GiB"), std::string::npos) << cap;
