@@ -71,6 +71,19 @@ nlohmann::ordered_json by_year(const std::vector<YearCost>& years) {
   return list;
 }
 
+// The operating system's part in the run, by the process's own account (getrusage): its CPU seconds in the system
+// (every thread's) and the pages it touched for the first time (minor faults, each a page the system had to find and
+// clear: what a first solve's fresh tables cost, docs/performance.md "What a first touch costs here, measured
+// apart"). null where the account cannot be read.
+void add_system_part(nlohmann::ordered_json& json) {
+  rusage usage{};
+  const bool known = ::getrusage(RUSAGE_SELF, &usage) == 0;
+  json["system_cpu_seconds"] = known ? nlohmann::ordered_json(static_cast<double>(usage.ru_stime.tv_sec) +
+                                                              static_cast<double>(usage.ru_stime.tv_usec) * 1e-6)
+                                     : nlohmann::ordered_json(nullptr);
+  json["minor_page_faults"] = known ? nlohmann::ordered_json(usage.ru_minflt) : nlohmann::ordered_json(nullptr);
+}
+
 nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary& run, std::size_t heap_at_end) {
   const std::size_t peak = peak_resident_bytes();
   const std::size_t trees = scenario.survey.trees.size();
@@ -104,6 +117,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["heap_in_use_at_end_bytes"] = heap_at_end;
   json["peak_memory_bytes"] = peak;
   json["peak_memory_mib"] = static_cast<double>(peak) / (1024.0 * 1024.0);
+  add_system_part(json);
   json["by_year"] = by_year(run.by_year);
   return json;
 }

@@ -93,6 +93,13 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   const double peak = json.at("peak_memory_bytes");
   EXPECT_GT(peak, 1 << 20);
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
+  // The operating system's part: every resident page came in by a fault, and one fault brings in at most 2 MiB (a
+  // huge page), so the faults are at least the peak over 2 MiB; the system's CPU is some, less than the process's.
+  EXPECT_GE(json.at("minor_page_faults").get<double>(), peak / (2 << 20));
+  EXPECT_GT(json.at("system_cpu_seconds").get<double>(), 0.0);
+  double cpu = 0;
+  for (const auto& [stage, seconds] : json.at("stage_cpu_seconds").items()) cpu += seconds.get<double>();
+  EXPECT_LT(json.at("system_cpu_seconds").get<double>(), cpu + 1.0);
 }
 
 // by_year: each year of the loop once, in order, with its own part of every stage: the parts add up to the run's
