@@ -13,7 +13,8 @@ pages and for memory advised to be huge pages (MADV_HUGEPAGE, 2 MiB), each
 
 One line a measurement, "PAGES WHEN: S s a GiB (first pass), S s a GiB (second pass)"; the second pass writes the same
 pages again, already mapped, so it shows what a write costs without the faults. Timings vary with the machine and the
-hour: compare lines of one run. docs/performance.md "Memory touched for the first time" has this machine's figures.
+hour: compare lines of one run. docs/performance.md "What a first touch costs here, measured apart" has this
+machine's figures.
 """
 import argparse
 import mmap
