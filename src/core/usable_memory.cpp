@@ -48,7 +48,7 @@ std::optional<std::uint64_t> usable_memory_bytes() {
 }
 
 std::string gibibytes(std::uint64_t bytes) {
-  return fmt::format("{:.1f} GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
+  return fmt::format("{:.1f} GiB", static_cast<double>(bytes) / bytes_per_gib);
 }
 
 }  // namespace heliostand

@@ -13,6 +13,9 @@ namespace heliostand {
 // limit (`ulimit -v`). Nothing when none can be read.
 std::optional<std::uint64_t> usable_memory_bytes();
 
+// Bytes in a gibibyte, for the estimates' figures and their formulas in words.
+inline constexpr double bytes_per_gib = 1024.0 * 1024.0 * 1024.0;
+
 // "23.5 GiB": how the refusals and `check` write an estimate and the usable memory, one decimal.
 std::string gibibytes(std::uint64_t bytes);
 

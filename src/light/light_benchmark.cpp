@@ -16,6 +16,7 @@
 #include "core/json_string.hpp"
 #include "core/processor.hpp"
 #include "core/seconds_since.hpp"
+#include "core/usable_memory.hpp"
 #include "geometry/angles.hpp"
 #include "light/make_light_solver.hpp"
 #include "light/synthetic_canopy.hpp"
@@ -242,7 +243,6 @@ std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmark
 }
 
 // The synthetic canopy's memory estimate (light_benchmark.hpp): a fixed part and a part per leaf ball.
-constexpr double bytes_per_gib = 1024.0 * 1024.0 * 1024.0;
 constexpr double canopy_fixed_bytes = 1.0 * bytes_per_gib, canopy_bytes_per_ball = 2048.0;
 
 }  // namespace

@@ -9,9 +9,8 @@
 namespace heliostand {
 namespace {
 
-constexpr double mib = 1024.0 * 1024.0;
-constexpr double gib = 1024.0 * mib;
-constexpr double fixed_bytes = 1.0 * gib;        // program, OpenCL runtime, far-field table (memory_estimate.hpp)
+constexpr double mib = bytes_per_gib / 1024.0;
+constexpr double fixed_bytes = 1.0 * bytes_per_gib;  // program, OpenCL runtime, far-field table (memory_estimate.hpp)
 constexpr double bytes_per_tree = 1.75 * mib;    // docs/performance.md, the hectare for 60 years
 constexpr double default_table_mb = LightParameters{}.far_field_table_mb;  // inside fixed_bytes
 constexpr double table_layouts = 2;              // the OpenCL solver keeps two layouts of the table
@@ -25,7 +24,7 @@ double far_field_table_bytes(const LightParameters& light) {
 
 // The formula in words, from the constants above, for the refusals: "1 GiB + 1.75 MiB per tree[ + twice ...]".
 std::string formula(bool with_table) {
-  return fmt::format("{:g} GiB + {:g} MiB per tree{}", fixed_bytes / gib, bytes_per_tree / mib,
+  return fmt::format("{:g} GiB + {:g} MiB per tree{}", fixed_bytes / bytes_per_gib, bytes_per_tree / mib,
                      with_table ? fmt::format(" + twice the far-field table's cap above {:g} MB", default_table_mb)
                                 : "");
 }
