@@ -11,9 +11,9 @@ namespace {
 
 constexpr double mib = bytes_per_gib / 1024.0;
 constexpr double fixed_bytes = 1.0 * bytes_per_gib;  // program, OpenCL runtime, far-field table (memory_estimate.hpp)
-constexpr double bytes_per_tree = 1.75 * mib;    // docs/performance.md, the hectare for 60 years
+constexpr double bytes_per_tree = 1.75 * mib;        // docs/performance.md, the hectare for 60 years
 constexpr double default_table_mb = LightParameters{}.far_field_table_mb;  // inside fixed_bytes
-constexpr double table_layouts = 2;              // the OpenCL solver keeps two layouts of the table
+constexpr double table_layouts = 2;                  // the OpenCL solver keeps two layouts of the table
 
 // The far-field table's share beyond the fixed part: twice what its cap allows above the default (none for the
 // exact light, which has no far field).
