@@ -39,10 +39,19 @@ double angle_from_vertical(glm::dvec3 v) {
   return std::acos(std::clamp(v.z / glm::length(v), -1.0, 1.0));
 }
 
-// Rodrigues' rotation of v about the unit axis k by `angle` (right-handed).
-glm::dvec3 rotate(glm::dvec3 v, glm::dvec3 k, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+// A turn about the unit axis k by an angle (right-handed), its cosine and sine taken once: a droop or a bend turns
+// every shoot it carries by the same angle, and taking them for each shoot's base and tip was most of the turn's cost.
+struct Rotation {
+  glm::dvec3 axis{0.0, 0.0, 1.0};
+  double cosine = 1.0;
+  double sine = 0.0;
+};
+
+Rotation rotation_about(glm::dvec3 k, double angle) { return {k, std::cos(angle), std::sin(angle)}; }
+
+// Rodrigues' rotation of v.
+glm::dvec3 rotate(glm::dvec3 v, const Rotation& r) {
+  return v * r.cosine + glm::cross(r.axis, v) * r.sine + r.axis * glm::dot(r.axis, v) * (1.0 - r.cosine);
 }
 
 double shoot_length(const Shoot& shoot) { return glm::length(shoot.tip - shoot.base); }
@@ -371,7 +380,8 @@ double ConiferTree::axis_length_m(const BranchAxis& axis) const {
 // carries turns with it. The anti-gravity lift of each new shoot then shows as an upturned tip.
 void ConiferTree::droop_first_order_branches() {
   std::vector<double> turn(axes_.size(), 0.0);
-  std::vector<glm::dvec3> pivot(axes_.size()), hinge(axes_.size());
+  std::vector<glm::dvec3> pivot(axes_.size());
+  std::vector<Rotation> rotation(axes_.size());
   for (std::size_t i = 1; i < axes_.size(); ++i) {
     const BranchAxis& axis = axes_[i];
     if (axis.order != 1 || !axis.alive || axis.shoots.empty()) continue;
@@ -379,16 +389,17 @@ void ConiferTree::droop_first_order_branches() {
     const glm::dvec3 chord = shoots_[axis.shoots.back()].tip - pivot[i];
     const double horizontal = std::hypot(chord.x, chord.y);
     const double azimuth = horizontal > 1e-12 ? std::atan2(chord.y, chord.x) : axis.azimuth_rad;
-    hinge[i] = {-std::sin(azimuth), std::cos(azimuth), 0.0};  // turning about it by +θ lowers the branch
+    const glm::dvec3 hinge{-std::sin(azimuth), std::cos(azimuth), 0.0};  // turning about it by +θ lowers the branch
     const double target =
         std::clamp(radians(first_order_branch_angle_deg(species_, age_ - axis.year_formed)), 0.0, pi);
     turn[i] = target - angle_from_vertical(chord);
+    rotation[i] = rotation_about(hinge, turn[i]);
   }
   for (Shoot& shoot : shoots_) {
     const int root = axes_[shoot.axis].first_order_root;
     if (root < 0 || turn[root] == 0.0) continue;
-    shoot.base = pivot[root] + rotate(shoot.base - pivot[root], hinge[root], turn[root]);
-    shoot.tip = pivot[root] + rotate(shoot.tip - pivot[root], hinge[root], turn[root]);
+    shoot.base = pivot[root] + rotate(shoot.base - pivot[root], rotation[root]);
+    shoot.tip = pivot[root] + rotate(shoot.tip - pivot[root], rotation[root]);
   }
 }
 
@@ -479,12 +490,16 @@ void ConiferTree::update_radii() {
   }
   for (std::size_t i = 1; i < axes_.size(); ++i) {
     if (!axes_[i].alive) continue;
+    // From the tip down: a shoot's tip is the base of the shoot before it, so eq. 11 (a power, most of this
+    // function's cost) is taken once a shoot and its value carried to the next shoot's tip.
     double from_tip = 0.0;
+    double diameter_cm = branch_diameter_cm(species_, from_tip);
     for (auto s = axes_[i].shoots.rbegin(); s != axes_[i].shoots.rend(); ++s) {
       Shoot& shoot = shoots_[*s];
-      shoot.tip_radius_m = 0.005 * branch_diameter_cm(species_, from_tip);
+      shoot.tip_radius_m = 0.005 * diameter_cm;
       from_tip += shoot_length(shoot);
-      shoot.base_radius_m = 0.005 * branch_diameter_cm(species_, from_tip);
+      diameter_cm = branch_diameter_cm(species_, from_tip);
+      shoot.base_radius_m = 0.005 * diameter_cm;
     }
   }
 }
@@ -567,6 +582,7 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
   if (glm::length(hinge) < 1e-9) hinge = glm::cross(from, glm::dvec3{0.0, 1.0, 0.0});
   hinge = glm::normalize(hinge);
   const glm::dvec3 pivot = bent.base;
+  const Rotation turn = rotation_about(hinge, angle);
   // The bent shoot's descendants all lie after it: only that tail is looked at. The light response bends every
   // new shoot, and new shoots are the last in the list, so a bend costs the year's new shoots, not the whole
   // crown (which made the light response a fifth of the example's time).
@@ -576,8 +592,8 @@ void ConiferTree::bend_shoot(int shoot_index, glm::dvec3 direction) {
   flag_descendants(moves, first);
   for (std::size_t i = first; i < shoots_.size(); ++i) {
     if (!moves[i - first]) continue;
-    if (i != first) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, hinge, angle);
-    shoots_[i].tip = pivot + rotate(shoots_[i].tip - pivot, hinge, angle);
+    if (i != first) shoots_[i].base = pivot + rotate(shoots_[i].base - pivot, turn);
+    shoots_[i].tip = pivot + rotate(shoots_[i].tip - pivot, turn);
   }
 }
 

@@ -338,13 +338,24 @@ TEST(ConiferTree, RadiiFollowEq2OnTheStemAndEq11OnBranches) {
     const Shoot& shoot = tree.shoots()[s];
     EXPECT_NEAR(shoot.base_radius_m, taper.diameter_cm(species, shoot.base.z - tree.stem_base().z) / 200.0, 1e-12);
   }
+  int branch_shoots = 0;
   for (const BranchAxis& axis : tree.axes()) {
     if (axis.order == 0 || !axis.alive) continue;
     double length = 0.0;
     for (int s : axis.shoots) length += glm::length(tree.shoots()[s].tip - tree.shoots()[s].base);
     EXPECT_NEAR(tree.shoots()[axis.shoots.front()].base_radius_m, branch_diameter_cm(species, length) / 200.0, 1e-12);
     EXPECT_EQ(tree.shoots()[axis.shoots.back()].tip_radius_m, 0.0);
+    // Every shoot between, at both ends, by its own length from the branch tip (update_radii carries each base's
+    // value to the next shoot's tip, so a slip there would show on the inner shoots only).
+    double from_tip = 0.0;
+    for (auto s = axis.shoots.rbegin(); s != axis.shoots.rend(); ++s, ++branch_shoots) {
+      const Shoot& shoot = tree.shoots()[*s];
+      EXPECT_NEAR(shoot.tip_radius_m, branch_diameter_cm(species, from_tip) / 200.0, 1e-12);
+      from_tip += glm::length(shoot.tip - shoot.base);
+      EXPECT_NEAR(shoot.base_radius_m, branch_diameter_cm(species, from_tip) / 200.0, 1e-12);
+    }
   }
+  EXPECT_GT(branch_shoots, 100);  // a 15-year tree's branches, many of several shoots
 }
 
 TEST(ConiferTree, RemovingAShootTakesEverythingItCarries) {
