@@ -40,7 +40,8 @@ double angle_from_vertical(glm::dvec3 v) {
 }
 
 // A turn about the unit axis k by an angle (right-handed), its cosine and sine taken once: a droop or a bend turns
-// every shoot it carries by the same angle, and taking them for each shoot's base and tip was most of the turn's cost.
+// every shoot it carries by the same angle, and a sine and cosine for each shoot's base and tip were a large part of
+// an old tree's growth (docs/performance.md "Eq. 11 once a shoot").
 struct Rotation {
   glm::dvec3 axis{0.0, 0.0, 1.0};
   double cosine = 1.0;
@@ -490,8 +491,8 @@ void ConiferTree::update_radii() {
   }
   for (std::size_t i = 1; i < axes_.size(); ++i) {
     if (!axes_[i].alive) continue;
-    // From the tip down: a shoot's tip is the base of the shoot before it, so eq. 11 (a power, most of this
-    // function's cost) is taken once a shoot and its value carried to the next shoot's tip.
+    // From the branch tip down: a shoot's tip lies at the same length from the branch tip as the base of the shoot
+    // before it in this loop, so eq. 11 (a power, most of this function's cost) is taken once a shoot and carried.
     double from_tip = 0.0;
     double diameter_cm = branch_diameter_cm(species_, from_tip);
     for (auto s = axes_[i].shoots.rbegin(); s != axes_[i].shoots.rend(); ++s) {
@@ -557,7 +558,8 @@ double ConiferTree::crown_radius_m() const {
 }
 
 std::size_t ConiferTree::living_shoot_count() const {
-  return static_cast<std::size_t>(std::count_if(shoots_.begin(), shoots_.end(), [](const Shoot& s) { return s.alive; }));
+  return static_cast<std::size_t>(
+      std::count_if(shoots_.begin(), shoots_.end(), [](const Shoot& s) { return s.alive; }));
 }
 
 std::vector<int> ConiferTree::new_shoot_indices() const {
