@@ -86,5 +86,37 @@ TEST(OpenCLRootFieldSolver, GrowsTheSameRootSystemsAsTheReference) {
   }
 }
 
+// One solver serves every year of a run, and its kernel keeps the arguments one year set until the next sets them
+// again. A year with fewer segments, cells, apices and soil vertices than the year before, in another soil (another
+// frame origin), must use nothing that year set: its answers are those of a solver that never saw the larger year,
+// bit for bit.
+TEST(OpenCLRootFieldSolver, AYearAfterALargerOneAnswersAsAFreshSolverDoes) {
+  auto kept = make_opencl_or_null();
+  if (!kept) GTEST_SKIP() << "no OpenCL device";
+  auto fresh = make_opencl_or_null();
+  ASSERT_TRUE(fresh);
+  GrownStand large = test_stands::grown_stand(10, 1), small = test_stands::grown_stand(4, 2);
+  small.trees.pop_back();
+  SoilGrid small_soil{{{-3.0, -3.0, -2.0}, 0.25, {24, 24, 8}}, 1.0, 0.5};
+  small_soil.fill_gradient(SoilField::moisture, 0, 0.9, 0.2);
+  const test_stands::ApexQueries large_queries = test_stands::apices_at_every_segment_end(large, 1);
+  const test_stands::ApexQueries small_queries = test_stands::apices_at_every_segment_end(small, 2);
+  ASSERT_GT(large_queries.segments.lines.size(), 2 * small_queries.segments.lines.size());
+  kept->solve(large_queries.input(large.soil));
+  const auto after_large = kept->solve(small_queries.input(small_soil));
+  const auto alone = fresh->solve(small_queries.input(small_soil));
+  ASSERT_EQ(after_large.size(), alone.size());
+  int with_contacts = 0;
+  for (std::size_t t = 0; t < alone.size(); ++t) {
+    ASSERT_EQ(after_large[t].contacts, alone[t].contacts) << "apex " << t;
+    for (int axis = 0; axis < 3; ++axis) {
+      ASSERT_EQ(after_large[t].contact_avoidance[axis], alone[t].contact_avoidance[axis]) << "apex " << t;
+      ASSERT_EQ(after_large[t].moisture_pull[axis], alone[t].moisture_pull[axis]) << "apex " << t;
+    }
+    if (alone[t].contacts > 0) ++with_contacts;
+  }
+  EXPECT_GT(with_contacts, static_cast<int>(alone.size() / 4));  // the comparison is not vacuous
+}
+
 }  // namespace
 }  // namespace heliostand::roots
