@@ -16,7 +16,7 @@ __attribute__((always_inline)) inline float8 far_field_march8(__global const flo
                                                               float length, float3 cell, int4 dims, int periodic,
                                                               float saturated) {
   const float step_limit = min(cell.x, min(cell.y, cell.z));
-  const int samples = max(1, (int)ceil(length / step_limit - 1e-6f));
+  const int samples = max(1, (int)round_up(length / step_limit - 1e-6f));
   const float step = length / samples;
   const float3 per_metre = direction / cell;  // cells moved per metre along the ray
   int8 active = (int8)(0, 1, 2, 3, 4, 5, 6, 7) < lanes;

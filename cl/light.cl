@@ -7,6 +7,7 @@
 // BALANCED_LIGHT_FRACTION, made by the host from light_sum.hpp's balanced_light_fraction (the one copy: both
 // backends use the same threshold).
 // Per patch the kernel keeps log(B / B0): each occluding ball adds log(t), the far field adds -(1-t) tau.
+#include "rounding.clh"
 #include "voxel_grid.clh"
 
 #define PATCH_COUNT (SKY_BANDS * SKY_SECTORS)
@@ -172,8 +173,8 @@ inline void lane_windows(float8 dx, float8 dy, float8 dz, float8 r, BatchWindows
   const float8 half_angle = asin_window(sin_disc) + WINDOW_MARGIN;
   const float8 polar = acos_window(clamp(dz * inverse_dist, -1.0f, 1.0f));
   // bands whose centre polar angle (v + 0.5) * BAND_WIDTH lies within the disc's polar range
-  const int8 v_lo = max(0, convert_int8(ceil((polar - half_angle) / BAND_WIDTH - 0.5f)));
-  const int8 v_hi = min(SKY_BANDS - 1, convert_int8(floor((polar + half_angle) / BAND_WIDTH - 0.5f)));
+  const int8 v_lo = max(0, convert_int8(round_up((polar - half_angle) / BAND_WIDTH - 0.5f)));
+  const int8 v_hi = min(SKY_BANDS - 1, convert_int8(round_down((polar + half_angle) / BAND_WIDTH - 0.5f)));
   // a disc clear of the poles spans at most asin(sin(half angle) / sin(polar)) in azimuth;
   // sin(asin(sin_disc) + margin) by the angle-sum rule
   const float8 horizontal = sqrt(dx * dx + dy * dy);
@@ -181,8 +182,8 @@ inline void lane_windows(float8 dx, float8 dy, float8 dz, float8 r, BatchWindows
   const float8 spread = asin_window(fmin(1.0f, sin_half / (horizontal * inverse_dist))) + WINDOW_MARGIN;
   float8 azimuth = atan2_window(dy, dx);
   azimuth = select(azimuth, azimuth + 2.0f * PI_F, azimuth < 0.0f);
-  int8 h_lo = convert_int8(ceil((azimuth - spread) / SECTOR_WIDTH - 0.5f));
-  int8 h_hi = convert_int8(floor((azimuth + spread) / SECTOR_WIDTH - 0.5f));
+  int8 h_lo = convert_int8(round_up((azimuth - spread) / SECTOR_WIDTH - 0.5f));
+  int8 h_hi = convert_int8(round_down((azimuth + spread) / SECTOR_WIDTH - 0.5f));
   const int8 all_sectors = polar - half_angle <= 0.0f || polar + half_angle >= PI_F || h_hi - h_lo >= SKY_SECTORS;
   h_lo = select(h_lo, (int8)(0), all_sectors);
   h_hi = select(h_hi, (int8)(SKY_SECTORS - 1), all_sectors);
@@ -346,7 +347,7 @@ inline void far_field_attenuate(float* log_b, __global const float* by_cell, flo
                                 int4 dims, int periodic, float one_minus_t) {
   if (any(grid_outside8((float8)(at.x), (float8)(at.y), (float8)(at.z), origin, cell, dims, periodic))) return;
   const float3 u = (at - origin) / cell - 0.5f;
-  const float3 base = floor(u);
+  const float3 base = round_down(u);
   const float3 f = u - base;
   int lox = (int)base.x, hix = lox + 1, loy = (int)base.y, hiy = loy + 1;
   int loz = clamp((int)base.z, 0, dims.z - 1), hiz = clamp((int)base.z + 1, 0, dims.z - 1);

@@ -6,13 +6,15 @@
 // matter within R + the longest half segment ("reach"), and cells wholly beyond the reach are skipped. All positions are relative to one frame origin (float precision).
 // Build option TOUCHING_DISTANCE: roots::touching_distance_m, made by the host (segments nearer than this to the
 // apex give no direction and are not counted, on both backends alike).
+#include "rounding.clh"
+
 // Soil moisture at a point: trilinear interpolation of vertex values, points outside the grid read the
 // nearest boundary value (the same rule as roots::SoilGrid::value). Coordinates relative to the frame origin.
 float soil_moisture(global const float* moisture, int4 vertices, float3 soil_origin, float spacing, float3 p) {
   const int3 n = vertices.xyz;
   const float3 cells = convert_float3(n - 1);
   const float3 g = clamp((p - soil_origin) / spacing, (float3)(0.0f), cells);
-  const int3 base = min(convert_int3(floor(g)), n - 2);
+  const int3 base = min(convert_int3(round_down(g)), n - 2);
   const float3 f = g - convert_float3(base);
   float sum = 0.0f;
   for (int c = 0; c < 8; ++c) {
@@ -25,7 +27,7 @@ float soil_moisture(global const float* moisture, int4 vertices, float3 soil_ori
 }
 
 int3 grid_cell(float3 p, float3 grid_origin, float cell_size, int3 dims) {
-  return clamp(convert_int3(floor((p - grid_origin) / cell_size)), (int3)(0), dims - 1);
+  return clamp(convert_int3(round_down((p - grid_origin) / cell_size)), (int3)(0), dims - 1);
 }
 
 kernel void root_contact_field(global const float4* segment_middle,  // xyz midpoint, w half length
