@@ -4,19 +4,17 @@
 #include "compute/opencl_context.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
+#include <string>
 
+#include "compute/kernel_files_override.hpp"
 #include "compute/kernel_options.hpp"
 #include "compute/opencl_test_backend.hpp"
 #include "light/light_sum.hpp"
 #include "light/make_light_solver.hpp"
 #include "roots/make_root_field_solver.hpp"
 #include "roots/root_field_solver.hpp"
-#include "scoped_environment.hpp"
 
 namespace heliostand::compute {
 namespace {
@@ -40,29 +38,12 @@ TEST(BuildProgram, AKernelThatDoesNotCompileThrowsWithTheBuildLog) {
   EXPECT_NE(message.find("undeclared_value"), std::string::npos) << "no compiler log in: " << message;
 }
 
-// HELIOSTAND_KERNEL_DIR pointing at broken copies of the solvers' kernel files for one scope.
-class BrokenKernelFiles {
- public:
-  BrokenKernelFiles() {
-    for (const char* file : {"light.cl", "roots.cl"}) std::ofstream(dir_ / file) << "kernel void broken( {\n";
-  }
-  ~BrokenKernelFiles() { std::filesystem::remove_all(dir_); }
-  BrokenKernelFiles(const BrokenKernelFiles&) = delete;
-  BrokenKernelFiles& operator=(const BrokenKernelFiles&) = delete;
-
- private:
-  std::filesystem::path dir_ = [] {
-    auto dir = std::filesystem::temp_directory_path() / ("heliostand_broken_kernels_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
-  }();
-  testing::ScopedEnvironment kernel_dir_{"HELIOSTAND_KERNEL_DIR", dir_.string()};  // after dir_: made from it
-};
-
 TEST(BuildProgram, SolversWhoseKernelDoesNotCompileThrow) {
   const auto backend = opencl_backend_for_test();
   if (!backend) GTEST_SKIP() << "no OpenCL device";
-  const BrokenKernelFiles broken;
+  const std::string broken_source = "kernel void broken( {\n";
+  const testing::KernelFilesOverride broken("broken_kernels",
+                                            {{"light.cl", broken_source}, {"roots.cl", broken_source}});
   EXPECT_THROW(make_light_solver(*backend, LightParameters{}), std::runtime_error);
   EXPECT_THROW(roots::make_root_field_solver(*backend), std::runtime_error);
 }

@@ -3,14 +3,12 @@
 // field must come out the same, bit for bit, whichever the kernels were built with; and on PoCL the instruction is
 // the one taken (else this comparison would compare a build with itself).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstddef>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "compute/kernel_files_override.hpp"
 #include "compute/kernel_sources.hpp"
 #include "compute/opencl_context.hpp"
 #include "compute/opencl_test_backend.hpp"
@@ -19,35 +17,17 @@
 #include "light/opencl_light_solver.hpp"
 #include "roots/grown_root_stand.hpp"
 #include "roots/make_root_field_solver.hpp"
-#include "scoped_environment.hpp"
 
 namespace heliostand::compute {
 namespace {
 
-// HELIOSTAND_KERNEL_DIR holding cl/rounding.clh with HELIOSTAND_LIBRARY_ROUNDING defined first, for one scope:
-// every kernel built meanwhile takes the OpenCL built-ins' branch, as a compiler without the builtins would.
-class LibraryRounding {
- public:
-  LibraryRounding() { std::ofstream(dir_ / "rounding.clh") << "#define HELIOSTAND_LIBRARY_ROUNDING\n" << header(); }
-  ~LibraryRounding() { std::filesystem::remove_all(dir_); }
-  LibraryRounding(const LibraryRounding&) = delete;
-  LibraryRounding& operator=(const LibraryRounding&) = delete;
-
-  static std::string header() {
-    for (const EmbeddedKernel& file : embedded_kernels())
-      if (file.name == "rounding.clh") return std::string(file.source);
-    ADD_FAILURE() << "no cl/rounding.clh among the embedded kernel files";
-    return "";
-  }
-
- private:
-  std::filesystem::path dir_ = [] {
-    auto dir = std::filesystem::temp_directory_path() / ("heliostand_library_rounding_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
-  }();
-  testing::ScopedEnvironment kernel_dir_{"HELIOSTAND_KERNEL_DIR", dir_.string()};  // after dir_: made from it
-};
+// cl/rounding.clh as embedded, with HELIOSTAND_LIBRARY_ROUNDING defined first.
+std::string library_rounding_header() {
+  for (const EmbeddedKernel& file : embedded_kernels())
+    if (file.name == "rounding.clh") return "#define HELIOSTAND_LIBRARY_ROUNDING\n" + std::string(file.source);
+  ADD_FAILURE() << "no cl/rounding.clh among the embedded kernel files";
+  return "";
+}
 
 // ROUNDING_BY_INSTRUCTION as cl/rounding.clh sets it on this device (as a build with HELIOSTAND_KERNEL_DIR set
 // would read it).
@@ -74,11 +54,9 @@ struct Answers {
 
 Answers answers(const ComputeBackend& backend, const OpenCLContext& cpu) {
   Answers out;
-  LightParameters p;
-  p.exact = false;
+  LightParameters p;  // the default solve: culled, with its far field
   p.plot_x_max = p.plot_y_max = 8.0;
   p.cutoff_m = 1.5;
-  p.far_field_cell_m = 1.0;
   p.transmittance = 0.6;
   p.periodic = true;
   const CelestialSphere sky(p);
@@ -116,7 +94,9 @@ TEST(KernelRounding, TheInstructionAndTheLibraryGiveTheSameLightAndRootFieldBitF
   const Answers instruction = answers(*backend, cpu);
   Answers library;
   {
-    const LibraryRounding scope;
+    // every kernel built in this scope takes the OpenCL built-ins' branch, as a compiler without the builtins would
+    const testing::KernelFilesOverride library_rounding("library_rounding",
+                                                        {{"rounding.clh", library_rounding_header()}});
     EXPECT_EQ(rounding_by_instruction(cpu), 0);
     library = answers(*backend, cpu);
   }
