@@ -21,12 +21,9 @@
 namespace heliostand::compute {
 namespace {
 
-// cl/rounding.clh as embedded, with HELIOSTAND_LIBRARY_ROUNDING defined first.
+// cl/rounding.clh as the kernels read it, with HELIOSTAND_LIBRARY_ROUNDING defined first.
 std::string library_rounding_header() {
-  for (const EmbeddedKernel& file : embedded_kernels())
-    if (file.name == "rounding.clh") return "#define HELIOSTAND_LIBRARY_ROUNDING\n" + std::string(file.source);
-  ADD_FAILURE() << "no cl/rounding.clh among the embedded kernel files";
-  return "";
+  return "#define HELIOSTAND_LIBRARY_ROUNDING\n" + kernel_source("rounding.clh");
 }
 
 // ROUNDING_BY_INSTRUCTION as cl/rounding.clh sets it on this device (as a build with HELIOSTAND_KERNEL_DIR set
