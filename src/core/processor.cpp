@@ -9,10 +9,8 @@
 #include <sstream>
 #include <string_view>
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 
-#include "core/json_string.hpp"
 #include "core/trim_blanks.hpp"
 
 namespace heliostand {
@@ -37,7 +35,9 @@ std::vector<std::string> vector_extensions(std::string_view flags) {
   return present;
 }
 
-std::string optional_json(const std::optional<int>& value) { return value ? std::to_string(*value) : "null"; }
+nlohmann::ordered_json optional_json(const std::optional<int>& value) {
+  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json();
+}
 
 }  // namespace
 
@@ -71,12 +71,14 @@ Processor this_processor() {
   return cpuinfo ? processor_from_cpuinfo(cpuinfo) : Processor{};
 }
 
-std::string processor_json(const Processor& processor) {
-  std::vector<std::string> extensions;
-  for (const std::string& extension : processor.vector_extensions) extensions.push_back(json_string(extension));
-  return fmt::format(R"({{"model_name": {}, "cpu_family": {}, "model": {}, "vector_extensions": [{}]}})",
-                     processor.model_name.empty() ? "null" : json_string(processor.model_name),
-                     optional_json(processor.family), optional_json(processor.model), fmt::join(extensions, ", "));
+nlohmann::ordered_json processor_json(const Processor& processor) {
+  nlohmann::ordered_json json;
+  json["model_name"] =
+      processor.model_name.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(processor.model_name);
+  json["cpu_family"] = optional_json(processor.family);
+  json["model"] = optional_json(processor.model);
+  json["vector_extensions"] = processor.vector_extensions;
+  return json;
 }
 
 }  // namespace heliostand

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace heliostand {
 
 struct Processor {
@@ -26,6 +28,6 @@ Processor processor_from_cpuinfo(std::istream& cpuinfo);
 Processor this_processor();
 
 // {"model_name": "...", "cpu_family": 26, "model": 2, "vector_extensions": ["avx2", ...]}, null for what is unknown.
-std::string processor_json(const Processor& processor);
+nlohmann::ordered_json processor_json(const Processor& processor);
 
 }  // namespace heliostand

@@ -20,7 +20,7 @@ std::string to_json(const RunManifest& manifest) {
   json["started_utc"] = manifest.started_utc;
   json["finished_utc"] = manifest.finished_utc;
   json["finished_on"] = {{"hardware_threads", manifest.finished_on_hardware_threads},
-                         {"processor", nlohmann::ordered_json::parse(processor_json(manifest.finished_on_processor))}};
+                         {"processor", processor_json(manifest.finished_on_processor)}};
   json["first_stand_age"] = manifest.first_stand_age;
   json["last_stand_age"] = manifest.last_stand_age;
   json["wall_seconds"] = manifest.wall_seconds;

@@ -11,9 +11,9 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "core/json_string.hpp"
 #include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "core/usable_memory.hpp"
@@ -25,6 +25,7 @@ namespace heliostand {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using Json = nlohmann::ordered_json;  // fields in the order written
 
 struct Run {
   std::string name;
@@ -101,28 +102,31 @@ Run time_solver(const std::string& name, LightSolver& solver, const std::vector<
   return run;
 }
 
-std::string times_json(const Run& run) {
-  return fmt::format(R"({{"seconds": {:.6g}, "setup_seconds": {:.6g}, "search_seconds": {:.6g}, )"
-                     R"("far_field_seconds": {:.6g})",
-                     run.seconds, run.setup_seconds, run.search_seconds, run.far_field_seconds);
+Json times_json(const Run& run) {
+  return {{"seconds", run.seconds},
+          {"setup_seconds", run.setup_seconds},
+          {"search_seconds", run.search_seconds},
+          {"far_field_seconds", run.far_field_seconds}};
 }
 
-std::string run_json(const Run& run, const Run& truth) {
-  if (!run.ran) return "null";
-  std::string text = times_json(run) + fmt::format(R"(, "far_field_cell_m": {:.6g}, "estimated_from_subsample": {})",
-                                                   run.far_field_cell_m, run.estimated ? "true" : "false");
+Json run_json(const Run& run, const Run& truth) {
+  if (!run.ran) return nullptr;
+  Json json = times_json(run);
+  json["far_field_cell_m"] = run.far_field_cell_m;
+  json["estimated_from_subsample"] = run.estimated;
   if (&run != &truth && truth.ran) {
     const Error e = error_against(truth.at_subsample, run.at_subsample);
-    text += fmt::format(R"(, "error_vs_reference_exact": {{"mean_abs_light": {:.6g}, "max_abs_light": {:.6g}, )"
-                        R"("mean_light_bias": {:.6g}, "mean_angle_degrees": {:.6g}}})",
-                        e.mean_abs_light, e.max_abs_light, e.mean_light_bias, e.mean_angle_degrees);
+    json["error_vs_reference_exact"] = {{"mean_abs_light", e.mean_abs_light},
+                                        {"max_abs_light", e.max_abs_light},
+                                        {"mean_light_bias", e.mean_light_bias},
+                                        {"mean_angle_degrees", e.mean_angle_degrees}};
   }
   if (!run.later.empty()) {
-    text += R"(, "later_evaluations": [)";
-    for (std::size_t k = 0; k < run.later.size(); ++k) text += (k > 0 ? ", " : "") + times_json(run.later[k]) + "}";
-    text += "]";
+    Json later = Json::array();
+    for (const Run& evaluation : run.later) later.push_back(times_json(evaluation));
+    json["later_evaluations"] = std::move(later);
   }
-  return text + "}";
+  return json;
 }
 
 // `evaluations - 1` more evaluations of `run`'s solver on the same balls. Each must light the subsample as the
@@ -142,28 +146,33 @@ void time_later_evaluations(Run& run, LightSolver& solver, const std::vector<Lea
   }
 }
 
-std::string ratio(const Run& slow, const Run& fast) {
-  if (!slow.ran || !fast.ran || fast.seconds <= 0) return "null";
-  return fmt::format("{:.4g}", slow.seconds / fast.seconds);
+Json ratio(const Run& slow, const Run& fast) {
+  if (!slow.ran || !fast.ran || fast.seconds <= 0) return nullptr;
+  return slow.seconds / fast.seconds;
 }
 
 const char* sky_name(LightParameters::Sky sky) {
   return sky == LightParameters::Sky::kanamaru ? "kanamaru" : "overcast";
 }
 
-std::string parameters_json(const LightParameters& p) {
-  return fmt::format(R"({{"sky": "{}", "sky_scale": {}, "sky_bands": {}, "sky_sectors": {}, "transmittance": {}, )"
-                     R"("intensity_ratio": {}, "cutoff_m": {}, "far_field_cell_m": {}, "far_field_bias_correction": {}, )"
-                     R"("far_field_hand_over_cells": {}, "periodic": {}}})",
-                     sky_name(p.sky), p.sky_scale, p.sky_bands, p.sky_sectors, p.transmittance, p.intensity_ratio,
-                     p.cutoff_m, p.far_field_cell_m, p.far_field_bias_correction, p.far_field_hand_over_cells,
-                     p.periodic ? "true" : "false");
+Json parameters_json(const LightParameters& p) {
+  return {{"sky", sky_name(p.sky)},
+          {"sky_scale", p.sky_scale},
+          {"sky_bands", p.sky_bands},
+          {"sky_sectors", p.sky_sectors},
+          {"transmittance", p.transmittance},
+          {"intensity_ratio", p.intensity_ratio},
+          {"cutoff_m", p.cutoff_m},
+          {"far_field_cell_m", p.far_field_cell_m},
+          {"far_field_bias_correction", p.far_field_bias_correction},
+          {"far_field_hand_over_cells", p.far_field_hand_over_cells},
+          {"periodic", p.periodic}};
 }
 
 // The four solvers on one canopy -- the culled ones with `parameters`, the exact ones with the same but exact --
-// as the fields of its row from "opencl_device" on.
-std::string solver_rows(const LightBenchmarkOptions& options, const std::vector<LeafBall>& balls,
-                        const LightParameters& parameters) {
+// added to its row as the fields from "opencl_device" on.
+void add_solver_fields(Json& row, const LightBenchmarkOptions& options, const std::vector<LeafBall>& balls,
+                       const LightParameters& parameters) {
   std::vector<std::uint32_t> subsample;
   const std::size_t k_count = std::min(options.subsample, balls.size());
   for (std::size_t k = 0; k < k_count; ++k) subsample.push_back(static_cast<std::uint32_t>(k * balls.size() / k_count));
@@ -191,55 +200,43 @@ std::string solver_rows(const LightBenchmarkOptions& options, const std::vector<
     time_later_evaluations(opencl_culled, *culled_solver, balls, subsample, balls.size(), options.evaluations);
   }
   const bool whole = balls.size() <= options.reference_exact_max;
-  return fmt::format(
-      R"("opencl_device": "{}",)"
-      "\n"
-      R"(     "build_seconds": {:.6g}, "mean_candidates": {:.6g}, "mean_tile_candidates": {:.6g},)"
-      "\n"
-      R"(     "error_measured_on": {{"balls": {}, "whole_stand": {}}},)"
-      "\n"
-      R"(     "reference_exact": {},)"
-      "\n"
-      R"(     "reference_culled": {},)"
-      "\n"
-      R"(     "opencl_exact": {},)"
-      "\n"
-      R"(     "opencl_culled_far_field": {},)"
-      "\n"
-      R"(     "speedup": {{"opencl_exact_over_reference_exact": {}, "opencl_culled_over_opencl_exact": {}, )"
-      R"("opencl_culled_over_reference_exact": {}, "reference_culled_over_reference_exact": {}}}}})",
-      device, opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds,
-      reference_culled.mean_candidates, reference_culled.mean_tile_candidates,
-      whole ? balls.size() : subsample.size(), whole ? "true" : "false",
-      run_json(reference_exact, reference_exact), run_json(reference_culled, reference_exact),
-      run_json(opencl_exact, reference_exact), run_json(opencl_culled, reference_exact),
-      ratio(reference_exact, opencl_exact), ratio(opencl_exact, opencl_culled), ratio(reference_exact, opencl_culled),
-      ratio(reference_exact, reference_culled));
+  row["opencl_device"] = device;
+  row["build_seconds"] = opencl_culled.ran ? opencl_culled.setup_seconds : reference_culled.setup_seconds;
+  row["mean_candidates"] = reference_culled.mean_candidates;
+  row["mean_tile_candidates"] = reference_culled.mean_tile_candidates;
+  row["error_measured_on"] = {{"balls", whole ? balls.size() : subsample.size()}, {"whole_stand", whole}};
+  row["reference_exact"] = run_json(reference_exact, reference_exact);
+  row["reference_culled"] = run_json(reference_culled, reference_exact);
+  row["opencl_exact"] = run_json(opencl_exact, reference_exact);
+  row["opencl_culled_far_field"] = run_json(opencl_culled, reference_exact);
+  row["speedup"] = {{"opencl_exact_over_reference_exact", ratio(reference_exact, opencl_exact)},
+                    {"opencl_culled_over_opencl_exact", ratio(opencl_exact, opencl_culled)},
+                    {"opencl_culled_over_reference_exact", ratio(reference_exact, opencl_culled)},
+                    {"reference_culled_over_reference_exact", ratio(reference_exact, reference_culled)}};
 }
 
-std::string synthetic_row(const LightBenchmarkOptions& options, std::size_t ball_count) {
+Json synthetic_row(const LightBenchmarkOptions& options, std::size_t ball_count) {
   const SyntheticCanopy canopy = make_synthetic_canopy(ball_count, options.seed);
   LightParameters parameters = options.parameters;
   parameters.plot_x_min = parameters.plot_y_min = 0;
   parameters.plot_x_max = parameters.plot_y_max = canopy.plot_size_m;
-  return fmt::format(R"(    {{"balls": {}, "trees": {}, "plot_m": {:.4g}, )", canopy.balls.size(), canopy.tree_count,
-                     canopy.plot_size_m) +
-         solver_rows(options, canopy.balls, parameters);
+  Json row = {{"balls", canopy.balls.size()}, {"trees", canopy.tree_count}, {"plot_m", canopy.plot_size_m}};
+  add_solver_fields(row, options, canopy.balls, parameters);
+  return row;
 }
 
 // A real stand's row: the synthetic rows' fields, plus the stand's name, plot and own light parameters.
-std::string stand_row(const LightBenchmarkOptions& options, const LightBenchmarkStand& stand) {
+Json stand_row(const LightBenchmarkOptions& options, const LightBenchmarkStand& stand) {
   const LightParameters& p = stand.parameters;
   const double width = p.plot_x_max - p.plot_x_min, depth = p.plot_y_max - p.plot_y_min;
-  return fmt::format(R"(    {{"stand": {}, "balls": {}, "trees": {}, "plot_m": {}, )"
-                     R"("plot_bounds_m": [{:.6g}, {:.6g}, {:.6g}, {:.6g}],)"
-                     "\n"
-                     R"(     "parameters": {},)"
-                     "\n     ",
-                     json_string(stand.name), stand.balls.size(), stand.tree_count,
-                     width == depth ? fmt::format("{:.4g}", width) : "null", p.plot_x_min, p.plot_y_min,
-                     p.plot_x_max, p.plot_y_max, parameters_json(p)) +
-         solver_rows(options, stand.balls, p);
+  Json row = {{"stand", stand.name},
+              {"balls", stand.balls.size()},
+              {"trees", stand.tree_count},
+              {"plot_m", width == depth ? Json(width) : Json()},  // null for a plot that is not square
+              {"plot_bounds_m", {p.plot_x_min, p.plot_y_min, p.plot_x_max, p.plot_y_max}},
+              {"parameters", parameters_json(p)}};
+  add_solver_fields(row, options, stand.balls, p);
+  return row;
 }
 
 // The synthetic canopy's memory estimate (light_benchmark.hpp): a fixed part and a part per leaf ball.
@@ -258,25 +255,26 @@ std::string synthetic_canopy_memory_formula() {
 }
 
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {
-  std::string text = fmt::format(
-      R"({{"benchmark": "light", "seed": {}, "hardware_threads": {}, "processor": {},)"
-      "\n"
-      R"( "parameters": {},)"
-      "\n"
-      R"( "limits": {{"reference_exact_max": {}, "reference_culled_max": {}, "opencl_exact_max": {}, "subsample": {}}},)"
-      "\n"
-      R"( "note": "above a solver's limit its time is extrapolated from an evenly spaced subsample of balls (setup + per-ball time x N / subsample); errors are measured on that subsample against reference exact; the synthetic stands use these parameters, a real stand (\"stand\") its own",)"
-      "\n"
-      R"( "stands": [)"
-      "\n",
-      options.seed, std::thread::hardware_concurrency(), processor_json(this_processor()),
-      parameters_json(options.parameters), options.reference_exact_max, options.reference_culled_max,
-      options.opencl_exact_max, options.subsample);
-  std::vector<std::string> rows;
+  Json json;
+  json["benchmark"] = "light";
+  json["seed"] = options.seed;
+  json["hardware_threads"] = std::thread::hardware_concurrency();
+  json["processor"] = processor_json(this_processor());
+  json["parameters"] = parameters_json(options.parameters);
+  json["limits"] = {{"reference_exact_max", options.reference_exact_max},
+                    {"reference_culled_max", options.reference_culled_max},
+                    {"opencl_exact_max", options.opencl_exact_max},
+                    {"subsample", options.subsample}};
+  json["note"] = "above a solver's limit its time is extrapolated from an evenly spaced subsample of balls (setup + "
+                 "per-ball time x N / subsample); errors are measured on that subsample against reference exact; the "
+                 "synthetic stands use these parameters, a real stand (\"stand\") its own";
+  Json rows = Json::array();
   for (std::size_t ball_count : options.ball_counts) rows.push_back(synthetic_row(options, ball_count));
   for (const LightBenchmarkStand& stand : stands) rows.push_back(stand_row(options, stand));
-  for (std::size_t k = 0; k < rows.size(); ++k) text += rows[k] + (k + 1 < rows.size() ? ",\n" : "\n");
-  return text + " ]}\n";
+  json["stands"] = std::move(rows);
+  // A NaN or infinite figure is written as null, and a stand's name in a legacy encoding with its invalid bytes
+  // replaced: the JSON stays valid whatever a run measured.
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace heliostand

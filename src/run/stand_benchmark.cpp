@@ -92,7 +92,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["scenario"] = scenario.file.string();
   json["device"] = run.device;
   json["hardware_threads"] = std::thread::hardware_concurrency();  // the cores stage_cpu_seconds can fill
-  json["processor"] = nlohmann::json::parse(processor_json(this_processor()));  // the machine the seconds are of
+  json["processor"] = processor_json(this_processor());  // the machine the seconds are of
   json["seed"] = scenario.run.seed;
   json["vtk_output"] = false;
   json["years"] = run.last_stand_age - run.first_stand_age;
@@ -154,7 +154,10 @@ std::string run_stand_benchmark(const Scenario& scenario, const StandBenchmarkOp
     if (year == scenario.run.years) heap_at_end = heap_in_use_bytes();
   };
   const SimulationSummary summary = run_simulation(scenario, run);
-  return report(scenario, summary, heap_at_end).dump(2) + "\n";
+  // A scenario path in a legacy encoding has its invalid bytes replaced, as run.json does, rather than the report
+  // refused after the whole run.
+  return report(scenario, summary, heap_at_end).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) +
+         "\n";
 }
 
 }  // namespace heliostand

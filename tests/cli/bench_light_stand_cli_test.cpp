@@ -127,6 +127,17 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(given.json.at("parameters").at("cutoff_m"), 2.0) << "the synthetic stands' parameters";
 }
 
+// A scenario in a folder named in a legacy encoding (Latin-1 "café": byte 0xe9, not UTF-8): the row names it with that
+// byte replaced by U+FFFD, and the file is still JSON that a reader takes. Written by hand, the byte went out as it was
+// and the file was not valid JSON.
+TEST(BenchLightStandCli, AScenarioPathNotInUtf8StillGivesValidJson) {
+  const fs::path folder = scratch_folder("bench-light-stand-latin1");
+  const fs::path scenario = tiny_scenario(folder / "caf\xe9" / "scenario.toml", "");
+  const Bench bench = bench_light(folder / "out", "--stand '" + scenario.string() + "'" + parameters_only);
+  ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
+  EXPECT_EQ(bench.json.at("stands").at(0).at("stand"), (folder / "caf\xef\xbf\xbd" / "scenario.toml").string());
+}
+
 // A missing or bad scenario: the scenario reader's message (file, line, key, reason), exit 2, and no JSON at all,
 // not even for the synthetic stands asked for beside it.
 TEST(BenchLightStandCli, BadScenarioIsRefusedBeforeAnyJson) {

@@ -240,6 +240,26 @@ TEST(BenchStandCli, WritesTheTablesOnlyWhereAsked) {
   EXPECT_FALSE(fs::exists(tables / "stand"));
 }
 
+// The bench's tiny stand read from a folder named in a legacy encoding (Latin-1 "café": byte 0xe9, not UTF-8): the
+// run is reported, its scenario named with that byte replaced by U+FFFD. Before, the report's writer refused the
+// byte after the whole run had been grown, and the command ended with exit 1 and no JSON.
+TEST(BenchStandCli, AScenarioPathNotInUtf8IsReported) {
+  const fs::path folder = scratch_folder("bench-stand-latin1");
+  const fs::path scenario = folder / "caf\xe9" / "tiny.toml";
+  fs::create_directories(scenario.parent_path());
+  std::string text = read_text(tiny_bench_stand);
+  const std::string survey = "\"../../../stands/tiny/survey.csv\"";
+  ASSERT_NE(text.find(survey), std::string::npos) << "the survey line this test rewrites";
+  text.replace(text.find(survey), survey.size(), "\"" + source_path("stands/tiny/survey.csv").string() + "\"");
+  std::ofstream(scenario) << text;
+  const fs::path json = folder / "bench.json";
+  const CliResult cli =
+      run_cli("bench stand '" + scenario.string() + "' --years 1 --device reference -o " + json.string() + " -q");
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  EXPECT_EQ(nlohmann::json::parse(read_text(json)).at("scenario"),
+            (folder / "caf\xef\xbf\xbd" / "tiny.toml").string());
+}
+
 TEST(BenchStandCli, BadInputExitsTwo) {
   EXPECT_EQ(run_cli("bench stand " + source_path("validation/bench/stands/no_such_scenario.toml").string()).status, 2);
   // stands/tiny thins at 23: one year (to 21) would never reach it, as with `grow --years 1`.
