@@ -37,9 +37,11 @@ void run_on_threads(std::size_t workers, Work work) {
   work();
 }  // the helpers join here
 
+// parallel_for on at most `threads` threads of the caller's choosing (a solver's own count, not `--threads`), with
+// the same guarantees: every index once, the threads that could start sharing the work, a failure rethrown here.
 template <typename Body>
-void parallel_for(std::size_t count, Body body) {
-  const std::size_t workers = std::min<std::size_t>(count, worker_threads());
+void parallel_for_on(std::size_t threads, std::size_t count, Body body) {
+  const std::size_t workers = std::min(count, threads);
   if (workers <= 1) {
     for (std::size_t i = 0; i < count; ++i) body(i);
     return;
@@ -58,6 +60,12 @@ void parallel_for(std::size_t count, Body body) {
     }
   });
   if (failure) std::rethrow_exception(failure);
+}
+
+// body(i) for every i in [0, count), on worker_threads() threads.
+template <typename Body>
+void parallel_for(std::size_t count, Body body) {
+  parallel_for_on(worker_threads(), count, body);
 }
 
 // parallel_for over [0, count) in blocks of `block` consecutive indices, body(first, last) per block: for loops

@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
 #include "geometry/angles.hpp"
 #include "light/foliage_clumping.hpp"
 
@@ -114,19 +115,19 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
   }
   if (bias_corrected_) apply_clumping_index(occluders);
   if (!with_table) return;
-  // The optical-depth table: patches are independent, so split them over the cores.
+  // The optical-depth table: patches are independent, so split them over the cores (at most four: each holds a
+  // table's worth of doubles). Share w takes every workers-th patch from w; a share whose thread cannot start (a
+  // process at its limit of threads) is swept by one that did, so the table never depends on the threads.
   const auto& patches = sky.patches();
   depth_.assign(patches.size() * grid_.cell_count(), 0.0f);
-  const unsigned workers = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
-  std::vector<std::jthread> pool;
-  for (unsigned w = 0; w < workers; ++w)
-    pool.emplace_back([&, w] {
-      std::vector<double> depth(grid_.cell_count());  // swept in double, stored in float (read by both solvers)
-      for (std::size_t q = w; q < patches.size(); q += workers) {
-        sweep(patches[q].direction, depth);
-        std::copy(depth.begin(), depth.end(), depth_.begin() + q * grid_.cell_count());
-      }
-    });
+  const std::size_t workers = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
+  parallel_for_on(workers, workers, [&](std::size_t w) {
+    std::vector<double> depth(grid_.cell_count());  // swept in double, stored in float (read by both solvers)
+    for (std::size_t q = w; q < patches.size(); q += workers) {
+      sweep(patches[q].direction, depth);
+      std::copy(depth.begin(), depth.end(), depth_.begin() + q * grid_.cell_count());
+    }
+  });
 }
 
 // Layer by layer against the light: tau at a cell centre c = the integral of sigma from c + s N to

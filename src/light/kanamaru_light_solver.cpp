@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel_for.hpp"
 #include "geometry/angles.hpp"
 #include "light/light_sum.hpp"
 #include "light/occluders.hpp"
@@ -83,24 +84,23 @@ std::vector<LightSample> KanamaruLightSolver::solve_for(std::span<const LeafBall
                                                         std::span<const std::uint32_t> receivers) {
   check_receivers(balls, receivers);
   const CelestialSphere sky(parameters_);
+  // The receivers in one chunk a thread, on the hardware's threads (at most eight); the threads that can start share
+  // the chunks of those that cannot (a process at its limit of threads), so the answer never depends on them.
   const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
   const std::size_t chunk = std::max<std::size_t>(1, (receivers.size() + workers - 1) / workers);
+  const std::size_t chunks = (receivers.size() + chunk - 1) / chunk;
   std::vector<LightSample> samples(receivers.size());
-  std::vector<std::thread> threads;
-  for (std::size_t begin = 0; begin < receivers.size(); begin += chunk) {
-    const std::size_t end = std::min(receivers.size(), begin + chunk);
-    threads.emplace_back([&, begin, end] {
-      if (enclosing_balls_shade_) {
-        ReferenceLightSolver stand_rule(parameters_);
-        const auto part = stand_rule.solve_for(balls, receivers.subspan(begin, end - begin));
-        std::copy(part.begin(), part.end(), samples.begin() + static_cast<std::ptrdiff_t>(begin));
-      } else {
-        for (std::size_t k = begin; k < end; ++k)
-          samples[k] = kanamaru_light(sky, balls, receivers[k], parameters_.transmittance);
-      }
-    });
-  }
-  for (auto& thread : threads) thread.join();
+  parallel_for_on(workers, chunks, [&](std::size_t c) {
+    const std::size_t begin = c * chunk, end = std::min(receivers.size(), begin + chunk);
+    if (enclosing_balls_shade_) {
+      ReferenceLightSolver stand_rule(parameters_);
+      const auto part = stand_rule.solve_for(balls, receivers.subspan(begin, end - begin));
+      std::copy(part.begin(), part.end(), samples.begin() + static_cast<std::ptrdiff_t>(begin));
+    } else {
+      for (std::size_t k = begin; k < end; ++k)
+        samples[k] = kanamaru_light(sky, balls, receivers[k], parameters_.transmittance);
+    }
+  });
   statistics_ = {};
   statistics_.mean_candidates = balls.empty() ? 0.0 : static_cast<double>(balls.size() - 1);
   return samples;

@@ -25,7 +25,8 @@ class KanamaruLightSolver final : public LightSolver {
   // direction), for the experiments that compare the two.
   KanamaruLightSolver(const LightParameters& parameters, bool enclosing_balls_shade);
   std::string name() const override { return enclosing_balls_shade_ ? "kanamaru (stand rule)" : "kanamaru"; }
-  // The receivers are split over up to 8 threads; each receiver's answer is independent of the others.
+  // The receivers are split over up to 8 threads (fewer where no more can start); each receiver's answer is
+  // independent of the others.
   std::vector<LightSample> solve_for(std::span<const LeafBall> balls,
                                      std::span<const std::uint32_t> receivers) override;
 

@@ -1,16 +1,14 @@
 #include "core/parallel_for.hpp"
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <set>
 #include <stdexcept>
 
 #include "address_sanitizer.hpp"
+#include "address_space_limit.hpp"
 
 namespace heliostand {
 namespace {
@@ -47,6 +45,23 @@ TEST_F(ParallelFor, BlocksCoverEveryIndexOnceWithTheLastBlockShort) {
   parallel_for_blocks(0, 8, [](std::size_t, std::size_t) { FAIL() << "a block of nothing"; });
 }
 
+// A solver's own count of threads, whatever `--threads` chose: every index once, on at most that many threads.
+TEST_F(ParallelFor, OnItsOwnCountUsesNoMoreThreadsThanAsked) {
+  set_worker_threads(1);
+  std::vector<std::atomic<int>> visits(1000);
+  std::mutex mutex;
+  std::set<std::thread::id> workers;
+  parallel_for_on(3, visits.size(), [&](std::size_t i) {
+    ++visits[i];
+    const std::lock_guard lock(mutex);
+    workers.insert(std::this_thread::get_id());
+  });
+  for (std::size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i].load(), 1) << i;
+  EXPECT_LE(workers.size(), 3u);
+  EXPECT_THROW(parallel_for_on(2, 10, [](std::size_t i) { if (i == 7) throw std::runtime_error("patch 7"); }),
+               std::runtime_error);
+}
+
 TEST_F(ParallelFor, ZeroMeansTheHardwaresCount) {
   set_worker_threads(0);
   EXPECT_EQ(worker_threads(), std::max(1u, std::thread::hardware_concurrency()));
@@ -56,16 +71,6 @@ TEST_F(ParallelFor, AFailureInOneIterationReachesTheCaller) {
   set_worker_threads(3);
   EXPECT_THROW(parallel_for(100, [](std::size_t i) { if (i == 42) throw std::runtime_error("tree 42"); }),
                std::runtime_error);
-}
-
-// Leaves this process `headroom` bytes of address space beyond what it maps now: a thread's stack (megabytes) is
-// mapped from it, so only a few more threads can start.
-void limit_address_space(std::size_t headroom) {
-  std::size_t pages = 0;
-  std::ifstream("/proc/self/statm") >> pages;
-  const rlim_t limit = pages * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + headroom;
-  const rlimit both{limit, limit};
-  if (pages == 0 || ::setrlimit(RLIMIT_AS, &both) != 0) std::_Exit(3);
 }
 
 // Where the process may start no more threads, the threads started and the caller do every iteration. Before,
@@ -81,7 +86,7 @@ TEST_F(ParallelFor, WhereNoMoreThreadsCanStartTheOnesRunningDoEveryIteration) {
         std::vector<std::atomic<int>> visits(1000);
         std::mutex mutex;
         std::set<std::thread::id> workers;
-        limit_address_space(64u << 20);
+        testing::limit_address_space(64u << 20);
         parallel_for(visits.size(), [&](std::size_t i) {
           ++visits[i];
           const std::lock_guard lock(mutex);
