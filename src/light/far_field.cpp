@@ -115,9 +115,10 @@ FarField::FarField(const OccluderSet& occluders, const LightParameters& p, const
   }
   if (bias_corrected_) apply_clumping_index(occluders);
   if (!with_table) return;
-  // The optical-depth table: patches are independent, so split them over the cores (at most four: each holds a
-  // table's worth of doubles). Share w takes every workers-th patch from w; a share whose thread cannot start (a
-  // process at its limit of threads) is swept by one that did, so the table never depends on the threads.
+  // The optical-depth table: patches are independent, so split them over the cores (at most four: each holds one
+  // patch's depths over the whole grid in double). Share w takes every workers-th patch from w; a share whose thread
+  // cannot start (a process at its limit of threads) is swept by one that did, so the table never depends on the
+  // threads.
   const auto& patches = sky.patches();
   depth_.assign(patches.size() * grid_.cell_count(), 0.0f);
   const std::size_t workers = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
