@@ -4,6 +4,7 @@
 // per-user limit of processes (`ulimit -u`, as on shared clusters) would say the same, but does not bind root, and
 // these tests run as root on CI. Call only in a death test's child: the cap is for the rest of the process's life.
 // (Not under AddressSanitizer, which reserves terabytes of address space: see address_sanitizer.hpp.)
+#include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -13,6 +14,9 @@
 #include <string>
 #include <system_error>
 #include <thread>
+
+#include "address_sanitizer.hpp"
+#include "scoped_environment.hpp"
 
 namespace heliostand::testing {
 
@@ -44,6 +48,25 @@ inline bool a_thread_can_start() {
   } catch (const std::system_error&) {
     return false;
   }
+}
+
+// Expects `same_as_threaded()` to hold in a death test's child that can start no thread (its address space capped
+// 4 MiB above what it maps, less than a thread's stack; glibc's stack cache off, set here before the child starts).
+// The child exits 2 where a thread could still start, so a cap that did not bite fails the test rather than passing
+// it. Call it last in a test: the child runs the test again up to here, the threaded answer included. Skips under
+// AddressSanitizer.
+template <typename Check>
+void expect_where_no_thread_can_start(Check same_as_threaded) {
+  if (address_sanitizer) GTEST_SKIP() << "ASan reserves terabytes of address space: no limit on it can be set";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const ScopedEnvironment no_stack_cache("GLIBC_TUNABLES", without_thread_stack_cache());
+  EXPECT_EXIT(
+      {
+        limit_address_space(4u << 20);
+        const bool same = same_as_threaded();
+        std::_Exit(a_thread_can_start() ? 2 : same ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace heliostand::testing
