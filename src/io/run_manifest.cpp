@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/json_text.hpp"
+
 namespace heliostand {
 
 std::string to_json(const RunManifest& manifest) {
@@ -28,8 +30,7 @@ std::string to_json(const RunManifest& manifest) {
   for (const auto& [stage, seconds] : manifest.stage_seconds) stages[stage] = seconds;
   json["stage_seconds"] = stages;
   json["output_files"] = manifest.output_files;
-  // Invalid UTF-8 (e.g. a path in a legacy encoding) is replaced rather than aborting the run at its end.
-  return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  return json_text(json);  // invalid UTF-8 (a path in a legacy encoding) replaced, not the run aborted at its end
 }
 
 std::string utc_now_iso8601() {

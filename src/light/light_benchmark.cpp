@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/json_text.hpp"
 #include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "core/usable_memory.hpp"
@@ -274,7 +275,7 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options, const std:
   json["stands"] = std::move(rows);
   // A NaN or infinite figure is written as null, and a stand's name in a legacy encoding with its invalid bytes
   // replaced: the JSON stays valid whatever a run measured.
-  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return json_text(json);
 }
 
 }  // namespace heliostand

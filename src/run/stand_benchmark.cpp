@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/json_text.hpp"
 #include "core/processor.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
@@ -154,10 +155,7 @@ std::string run_stand_benchmark(const Scenario& scenario, const StandBenchmarkOp
     if (year == scenario.run.years) heap_at_end = heap_in_use_bytes();
   };
   const SimulationSummary summary = run_simulation(scenario, run);
-  // A scenario path in a legacy encoding has its invalid bytes replaced, as run.json does, rather than the report
-  // refused after the whole run.
-  return report(scenario, summary, heap_at_end).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) +
-         "\n";
+  return json_text(report(scenario, summary, heap_at_end));
 }
 
 }  // namespace heliostand
