@@ -4,7 +4,7 @@
 // alone. Table layout [patch][z][y][x]; the density (sigma, 1/m) [z][y][x] with `margin` cells around the x and y
 // sides (src/light/far_field_margin.hpp). far_field_by_cell then lays the table out by cell for the culled light
 // kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option made by the host, is the
-// patch count rounded up to eight; the padding holds zeros).
+// patch count rounded up to eight; the padding holds zeros), only for the cells a receiver reads.
 #include "voxel_grid.clh"
 
 // Midpoint rule along `direction` from `start` metres beyond each lane's cell centre, at least one sample per cell
@@ -71,11 +71,39 @@ __kernel void far_field_layer(__global const float* density, const int margin, _
   }
 }
 
-// The swept table [patch][cell] laid out by cell, [cell][FAR_ROW]: work item (eight cells from
-// 8 * get_global_id(0), eight patches from 8 * get_global_id(1)).
-__kernel void far_field_by_cell(__global const float* depth, __global float* by_cell, const int cells) {
+// Marks, one byte a cell, the cells of the table by cell that the culled kernels read: the eight corners around
+// each receiver's centre (light.cl, far_field_attenuate), and the next ones along an axis where the centre lies
+// within READ_MARGIN cells of a plane of cell centres (where the corners change), so that no rounding of the
+// readers' own arithmetic can reach a cell left unmarked. A receiver beyond the grid marks its clamped or wrapped
+// corners, which the readers do not read.
+#define READ_MARGIN 1e-3f
+__kernel void far_field_mark_read(__global const float4* balls, __global const int* receivers,
+                                  const int receiver_count, const float4 grid_origin, const float4 grid_cell,
+                                  const int4 grid_dims, const int periodic, __global uchar* read) {
+  const int slot = get_global_id(0);
+  if (slot >= receiver_count) return;
+  const float3 u = (balls[receivers[slot]].xyz - grid_origin.xyz) / grid_cell.xyz - 0.5f;
+  const int3 low = convert_int3(round_down(u - READ_MARGIN));
+  const int3 high = convert_int3(round_down(u + READ_MARGIN)) + 1;
+  for (int z = low.z; z <= high.z; ++z)
+    for (int y = low.y; y <= high.y; ++y)
+      for (int x = low.x; x <= high.x; ++x) {
+        const int cz = clamp(z, 0, grid_dims.z - 1);
+        const int cy = periodic ? wrap_cell(y, grid_dims.y) : clamp(y, 0, grid_dims.y - 1);
+        const int cx = periodic ? wrap_cell(x, grid_dims.x) : clamp(x, 0, grid_dims.x - 1);
+        read[((size_t)cz * grid_dims.y + cy) * grid_dims.x + cx] = 1;
+      }
+}
+
+// The swept table [patch][cell] laid out by cell, [cell][FAR_ROW], for the cells marked read
+// (far_field_mark_read); the others keep whatever they held: work item (eight cells from 8 * get_global_id(0),
+// eight patches from 8 * get_global_id(1)).
+__kernel void far_field_by_cell(__global const float* depth, __global const uchar* read, __global float* by_cell,
+                                const int cells) {
   const int first_cell = get_global_id(0) * 8, first_patch = get_global_id(1) * 8;
-  for (int c = first_cell; c < min(first_cell + 8, cells); ++c)
+  for (int c = first_cell; c < min(first_cell + 8, cells); ++c) {
+    if (!read[c]) continue;
     for (int p = first_patch; p < first_patch + 8; ++p)
       by_cell[(size_t)c * FAR_ROW + p] = p < SKY_BANDS * SKY_SECTORS ? depth[(size_t)p * cells + c] : 0.0f;
+  }
 }

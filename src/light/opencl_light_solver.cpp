@@ -73,12 +73,37 @@ const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, st
   return kept.buffer;
 }
 
+// Which cells of the far field's table by cell the culled kernels will read, one byte a cell (cl/far_field.cl,
+// far_field_mark_read): the corners around each receiver. A first 10^5 solve reads 43 % of the cells, a 10^6 one 58 %
+// (docs/performance.md "A first 10^5 far field in its parts"); only those are laid out.
+const cl::Buffer& mark_cells_read(compute::OpenCLContext& device, cl::Kernel& k, const cl::Buffer& balls,
+                                  std::span<const std::uint32_t> receivers, const cl_float4& origin,
+                                  const cl_float4& cell, const cl_int4& dims, bool periodic, KeptBuffer& read_kept) {
+  const std::size_t cells = std::size_t(dims.s[0]) * dims.s[1] * dims.s[2];
+  const cl::Buffer& read = kept_at_least(device.context, read_kept, cells);
+  device.queue.enqueueFillBuffer(read, cl_uchar(0), 0, cells);
+  // The indices go as they are (unsigned, read as int: solve_culled has checked that the balls are fewer than 2^31).
+  const cl::Buffer receiver_buffer =
+      read_only(device.context, std::vector<std::uint32_t>(receivers.begin(), receivers.end()));
+  int arg = 0;
+  k.setArg(arg++, balls);
+  k.setArg(arg++, receiver_buffer);
+  k.setArg(arg++, cl_int(receivers.size()));
+  k.setArg(arg++, origin);
+  k.setArg(arg++, cell);
+  k.setArg(arg++, dims);
+  k.setArg(arg++, cl_int(periodic ? 1 : 0));
+  k.setArg(arg++, read);
+  compute::launch(device, k, receivers.size());
+  return read;
+}
+
 // The far field's optical-depth table, swept on the device from the density of `far` (cl/far_field.cl) and laid
-// out by cell; it stays there for the culled kernel.
+// out by cell where `read` marks a cell; it stays there for the culled kernel.
 cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Kernel& by_cell, const FarField& far,
                            std::span<const SkyPatch> sky_patches, const cl::Buffer& patches, const cl_float4& cell,
-                           const cl_int4& dims, bool periodic, KeptBuffer& swept_kept, KeptBuffer& table_kept,
-                           std::size_t table_cap_bytes) {
+                           const cl_int4& dims, bool periodic, const cl::Buffer& read, KeptBuffer& swept_kept,
+                           KeptBuffer& table_kept, std::size_t table_cap_bytes) {
   const auto& context = device.context;
   const std::size_t patch_count = sky_patches.size();
   const int margin = sweep_margin_cells(far, sky_patches);
@@ -119,8 +144,9 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // "The far-field table kept from one solve to the next").
   const cl::Buffer& table = kept_at_least(context, table_kept, cells * row * sizeof(float), table_cap_bytes);
   by_cell.setArg(0, depth);
-  by_cell.setArg(1, table);
-  by_cell.setArg(2, cl_int(cells));
+  by_cell.setArg(1, read);
+  by_cell.setArg(2, table);
+  by_cell.setArg(3, cl_int(cells));
   compute::launch(device, by_cell, (cells + 7) / 8, row / 8);
   device.queue.finish();
   return table;
@@ -221,12 +247,14 @@ struct OpenCLLightSolver::Device {
   cl::Kernel exact;
   cl::Kernel culled;
   cl::Kernel far_field_layer;
+  cl::Kernel far_field_mark_read;
   cl::Kernel far_field_by_cell;
   cl::Kernel each_alone;
   cl::Kernel culled_and_alone;
   cl::Kernel tile_entries;
   KeptBuffer far_field_swept;  // sweep_far_field's own layout, [patch][cell]
   KeptBuffer far_field_table;  // sweep_far_field's, laid out by cell
+  KeptBuffer far_field_read;   // mark_cells_read's, a byte a cell of the table
   KeptBuffer tile_entries_by_axis, tile_entry_tags;  // the tile lists as the culled kernels scan them
 };
 
@@ -255,6 +283,7 @@ OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const co
   device_->exact = cl::Kernel(device_->program, "light_exact");
   device_->culled = cl::Kernel(device_->program, "light_culled");
   device_->far_field_layer = cl::Kernel(device_->program, "far_field_layer");
+  device_->far_field_mark_read = cl::Kernel(device_->program, "far_field_mark_read");
   device_->far_field_by_cell = cl::Kernel(device_->program, "far_field_by_cell");
   device_->each_alone = cl::Kernel(device_->program, "light_each_alone");
   device_->culled_and_alone = cl::Kernel(device_->program, "light_culled_and_alone");
@@ -455,11 +484,15 @@ std::vector<LightSample> OpenCLLightSolver::solve_exact(const DeviceStand& stand
 std::vector<LightSample> OpenCLLightSolver::solve_culled(const DeviceStand& stand, std::span<const LeafBall> balls,
                                                          std::span<const std::uint32_t> receivers,
                                                          AloneLight* alone) {
+  // The kernels index the balls, and read the receivers' and occluders' indices, as int.
+  if (stand.set.centres.size() > std::size_t(std::numeric_limits<cl_int>::max()))
+    throw std::runtime_error("the light's stand holds " + std::to_string(stand.set.centres.size()) +
+                             " leaf balls with their periodic images, more than the OpenCL kernels can index");
   auto part_start = Clock::now();
   const NearFieldSearch search(stand.set, parameters_.cutoff_m);
   statistics_.search_seconds = seconds_since(part_start);
   part_start = Clock::now();
-  const FarFieldTable far = far_field_on_device(stand);
+  const FarFieldTable far = far_field_on_device(stand, receivers);
   statistics_.far_field_cell_m = far.cell_m;
   statistics_.far_field_seconds = seconds_since(part_start);
   statistics_.setup_seconds = seconds_since(stand.setup_start);
@@ -494,7 +527,8 @@ std::vector<LightSample> OpenCLLightSolver::solve_culled(const DeviceStand& stan
 
 // The far field: density on the host (O(balls)), optical-depth table swept on the device, where it stays.
 // Without a far field the kernel gets a one-cell table of zeros and a zero attenuation factor.
-OpenCLLightSolver::FarFieldTable OpenCLLightSolver::far_field_on_device(const DeviceStand& stand) {
+OpenCLLightSolver::FarFieldTable OpenCLLightSolver::far_field_on_device(const DeviceStand& stand,
+                                                                        std::span<const std::uint32_t> receivers) {
   const std::size_t patch_count = stand.sky.patches().size();
   const std::optional<FarField> far =
       parameters_.far_field ? std::optional<FarField>(std::in_place, stand.set, parameters_, stand.sky, false)
@@ -507,12 +541,17 @@ OpenCLLightSolver::FarFieldTable OpenCLLightSolver::far_field_on_device(const De
                           {{grid.dims.x, grid.dims.y, grid.dims.z, 0}},
                           far ? float(1.0 - parameters_.transmittance) : 0.0f,
                           far ? grid.cell.z : 0.0};  // z is never stretched to fit a periodic plot
-  on_device.table =
-      far ? sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
-                            stand.sky.patches(), stand.patches, on_device.grid_cell, on_device.grid_dims,
-                            stand.torus.periodic, device_->far_field_swept, device_->far_field_table,
-                            far_table_cap_bytes(parameters_, patch_count))
-          : read_only(device_->cl.context, std::vector<float>(far_row(patch_count), 0.0f));  // one empty cell
+  if (!far) {
+    on_device.table = read_only(device_->cl.context, std::vector<float>(far_row(patch_count), 0.0f));  // one empty cell
+    return on_device;
+  }
+  const cl::Buffer& read = mark_cells_read(device_->cl, device_->far_field_mark_read, stand.balls, receivers,
+                                           on_device.grid_origin, on_device.grid_cell, on_device.grid_dims,
+                                           stand.torus.periodic, device_->far_field_read);
+  on_device.table = sweep_far_field(device_->cl, device_->far_field_layer, device_->far_field_by_cell, *far,
+                                    stand.sky.patches(), stand.patches, on_device.grid_cell, on_device.grid_dims,
+                                    stand.torus.periodic, read, device_->far_field_swept, device_->far_field_table,
+                                    far_table_cap_bytes(parameters_, patch_count));
   return on_device;
 }
 
@@ -547,17 +586,14 @@ OpenCLLightSolver::TileScan OpenCLLightSolver::tile_scan_on_device(const DeviceS
       receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
     }
   const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
-  if (stand.set.centres.size() > std::size_t(std::numeric_limits<cl_int>::max()))
-    throw std::runtime_error("the light's stand holds " + std::to_string(stand.set.centres.size()) +
-                             " leaf balls with their periodic images, more than the OpenCL kernels can index");
   if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
     throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
                              " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
   const auto& context = device_->cl.context;
   const cl::Buffer& entries = kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
   const cl::Buffer& tags = kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
-  // The indices go as they are (unsigned, read as int by the kernel: the occluders are fewer than 2^31, checked
-  // above), not through an int copy of the whole list (144 MB at 10^6 balls).
+  // The indices go as they are (unsigned, read as int by the kernel: the balls are fewer than 2^31, checked by
+  // solve_culled), not through an int copy of the whole list (144 MB at 10^6 balls).
   const cl::Buffer occluders = read_only(context, near.occluders);
   auto& k = device_->tile_entries;
   int arg = 0;

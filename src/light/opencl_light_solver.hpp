@@ -51,7 +51,7 @@ class OpenCLLightSolver final : public LightSolver {
   std::vector<LightSample> solve_exact(const DeviceStand& stand, std::span<const std::uint32_t> receivers);
   std::vector<LightSample> solve_culled(const DeviceStand& stand, std::span<const LeafBall> balls,
                                         std::span<const std::uint32_t> receivers, AloneLight* alone);
-  FarFieldTable far_field_on_device(const DeviceStand& stand);
+  FarFieldTable far_field_on_device(const DeviceStand& stand, std::span<const std::uint32_t> receivers);
   FusedPass fused_pass_on_device(const DeviceStand& stand, std::span<const LeafBall> balls,
                                  const AloneLight& alone) const;
   TileScan tile_scan_on_device(const DeviceStand& stand, const TileCandidates& near,
