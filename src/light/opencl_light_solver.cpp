@@ -32,7 +32,7 @@ using Clock = std::chrono::steady_clock;
 constexpr std::size_t culled_chunk = std::size_t(1) << 18;
 
 template <typename T>
-cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
+cl::Buffer read_only(const cl::Context& context, std::span<const T> data) {
   // a zero-sized buffer is invalid in OpenCL; one element of padding keeps empty inputs legal
   if (data.empty()) {
     T padding{};
@@ -40,6 +40,11 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
   }
   return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
                     const_cast<T*>(data.data()));
+}
+
+template <typename T>
+cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
+  return read_only(context, std::span<const T>(data));
 }
 
 // Entries per cell of the far-field table as the culled kernel reads it: every patch, rounded up to eight
@@ -83,8 +88,7 @@ const cl::Buffer& mark_cells_read(compute::OpenCLContext& device, cl::Kernel& k,
   const cl::Buffer& read = kept_at_least(device.context, read_kept, cells);
   device.queue.enqueueFillBuffer(read, cl_uchar(0), 0, cells);
   // The indices go as they are (unsigned, read as int: solve_culled has checked that the balls are fewer than 2^31).
-  const cl::Buffer receiver_buffer =
-      read_only(device.context, std::vector<std::uint32_t>(receivers.begin(), receivers.end()));
+  const cl::Buffer receiver_buffer = read_only(device.context, receivers);
   int arg = 0;
   k.setArg(arg++, balls);
   k.setArg(arg++, receiver_buffer);
@@ -621,10 +625,8 @@ OpenCLLightSolver::CulledLight OpenCLLightSolver::shade_culled(const DeviceStand
                     std::vector<cl_float4>(fused != nullptr ? receiver_count : 0)};
   for (std::size_t first = 0; first < receiver_count; first += culled_chunk) {
     const std::size_t count = std::min(culled_chunk, receiver_count - first);
-    const cl::Buffer receivers_buffer = read_only(
-        context, std::vector<cl_int>(scan.receiver_balls.begin() + first, scan.receiver_balls.begin() + first + count));
-    const cl::Buffer scan_buffer = read_only(
-        context, std::vector<cl_int2>(scan.receiver_scan.begin() + first, scan.receiver_scan.begin() + first + count));
+    const cl::Buffer receivers_buffer = read_only(context, std::span(scan.receiver_balls).subspan(first, count));
+    const cl::Buffer scan_buffer = read_only(context, std::span(scan.receiver_scan).subspan(first, count));
     cl::Buffer out(context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
     const std::optional<cl::Buffer> alone_out =
         fused != nullptr ? std::optional<cl::Buffer>(std::in_place, context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4))
