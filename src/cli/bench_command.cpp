@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include "compute/device_choice.hpp"
 #include "core/usable_memory.hpp"
 #include "io/output_folder.hpp"
+#include "light/far_field_buffers.hpp"
 #include "light/light_benchmark.hpp"
 #include "run/established_canopy.hpp"
 #include "run/stand_benchmark.hpp"
@@ -67,13 +69,19 @@ std::string check_light_device(const std::string& text) {
 
 // The OpenCL device opened before any canopy is lit, so that a missing one fails at once rather than after the
 // reference solvers' minutes on a large canopy (exit 1, as `grow` fails on a missing device).
-void open_light_device(const std::string& text) {
+// A stand whose far-field cap that device cannot hold is named then too (light/far_field_buffers.hpp).
+void open_light_device(const std::string& text, const std::vector<LightBenchmarkStand>& stands) {
   if (text == "none") return;
   const auto choice = compute::DeviceChoice::parse(text);
   if (!compute::opencl_backend_built && choice.kind == compute::DeviceChoice::Kind::opencl)
     throw std::runtime_error("device '" + text + "': this build of heliostand has no OpenCL backend; --device none "
                              "runs the reference solvers alone");
-  (void)compute::ComputeBackend::open(choice);
+  const auto backend = compute::ComputeBackend::open(choice);
+  for (const auto& stand : stands) {
+    LightParameters culled = stand.parameters;  // the benchmark's culled solver's (light_benchmark.cpp)
+    culled.exact = false;
+    refuse_far_field_beyond_device(culled, backend, stand.name);
+  }
 }
 
 // `heliostand bench stand SCENARIO`: the scenario grown as `grow --no-vtk` grows it, timed (run/stand_benchmark.hpp).
@@ -220,7 +228,7 @@ void add_bench_light_command(CLI::App& bench) {
       overrides->apply(options->parameters, stands.back().parameters);
     }
     // After the input's own checks (a bad scenario is the error named first), before the solvers:
-    open_light_device(options->opencl_device);
+    open_light_device(options->opencl_device, stands);
     check_output_writable(*output);
     print_json(run_light_benchmark(*options, stands), *output);
   });

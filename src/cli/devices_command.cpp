@@ -1,5 +1,6 @@
 #include "cli/devices_command.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -17,9 +18,11 @@ void add_devices_command(CLI::App& app) {
     else if (list.empty())
       std::cout << "no OpenCL platform or device found: --device auto uses the reference solvers\n";
     for (const auto& d : list)
-      std::cout << fmt::format("{} opencl:{}  {} / {}  ({}, {}, {} compute units){}\n", d.is_default ? "*" : " ",
-                               d.index, d.platform, d.name, d.type, d.version, d.compute_units,
-                               d.is_default ? "  [default]" : "");
+      std::cout << fmt::format("{} opencl:{}  {} / {}  ({}, {}, {} compute units, {:.0f} MB memory, {:.0f} MB a "
+                               "buffer){}\n",
+                               d.is_default ? "*" : " ", d.index, d.platform, d.name, d.type, d.version,
+                               d.compute_units, std::floor(double(d.memory.total_bytes) / 1e6),
+                               std::floor(double(d.memory.buffer_bytes) / 1e6), d.is_default ? "  [default]" : "");
     std::cout << fmt::format("{} reference  plain C++ solvers of light and roots (the oracles; always available){}\n",
                              list.empty() ? "*" : " ", list.empty() ? "  [default]" : "");
   });

@@ -46,6 +46,13 @@ ComputeBackend ComputeBackend::open(const DeviceChoice& choice) {
   return reference_for_auto();
 }
 
+std::optional<DeviceMemory> ComputeBackend::memory() const {
+#ifdef HELIOSTAND_HAVE_OPENCL
+  if (opencl_) return opencl_->memory;
+#endif
+  return std::nullopt;
+}
+
 std::string ComputeBackend::name() const {
 #ifdef HELIOSTAND_HAVE_OPENCL
   if (opencl_) return "opencl:" + opencl_->description;

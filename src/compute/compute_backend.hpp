@@ -6,9 +6,11 @@
 //   OpenCL     one device, opened once: context, queue and device (compute/opencl_context.hpp)
 // This header needs no OpenCL headers, so code built without the OpenCL backend holds a backend too.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "compute/device_choice.hpp"
+#include "compute/device_memory.hpp"
 
 namespace heliostand::compute {
 
@@ -24,6 +26,8 @@ class ComputeBackend {
   bool is_opencl() const { return opencl_ != nullptr; }
   // The device every OpenCL solver of this backend runs on; null for the reference.
   const OpenCLContext* opencl() const { return opencl_.get(); }
+  // What the device holds (compute/device_memory.hpp); std::nullopt for the reference, whose memory is the host's.
+  std::optional<DeviceMemory> memory() const;
   std::string name() const;  // "reference" or "opencl:<platform> / <device>" (logs, run.json, solver names)
 
  private:

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "compute/device_memory.hpp"
+
 namespace heliostand::compute {
 
 struct DeviceChoice {
@@ -30,6 +32,7 @@ struct OpenCLDeviceInfo {
   std::string type;         // "CPU", "GPU", "accelerator", ...
   std::string version;      // OpenCL version string of the device
   unsigned compute_units = 0;
+  DeviceMemory memory;      // the largest buffer and all of them (the far field's cap must fit: docs/light.md)
   bool is_default = false;  // the one `auto` and `opencl` pick
 };
 

@@ -52,6 +52,10 @@ std::string type_name(cl_device_type type) {
   return "other";
 }
 
+DeviceMemory memory_of(const cl::Device& device) {
+  return {device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>(), device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>()};
+}
+
 // The default among the enumerated devices (default_opencl_device over their types): the one `heliostand devices`
 // marks and the one opened when no index is given.
 std::optional<int> default_of(const std::vector<PlatformDevice>& all) {
@@ -75,6 +79,7 @@ std::vector<OpenCLDeviceInfo> list_opencl_devices() {
     info.type = type_name(device.getInfo<CL_DEVICE_TYPE>());
     info.version = device.getInfo<CL_DEVICE_VERSION>();
     info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+    info.memory = memory_of(device);
     info.is_default = index == chosen;
     infos.push_back(info);
     ++index;
@@ -93,6 +98,7 @@ std::optional<OpenCLContext> open_opencl_device(std::optional<int> index) {
   context.index = chosen;
   context.device = all[chosen].device;
   context.type = context.device.getInfo<CL_DEVICE_TYPE>();
+  context.memory = memory_of(context.device);
   context.context = cl::Context(context.device);
   context.queue = cl::CommandQueue(context.context, context.device);
   context.description = all[chosen].platform.getInfo<CL_PLATFORM_NAME>() + " / " +

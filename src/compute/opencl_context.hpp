@@ -7,6 +7,8 @@
 
 #include <CL/opencl.hpp>
 
+#include "compute/device_memory.hpp"
+
 namespace heliostand::compute {
 
 struct OpenCLContext {
@@ -18,6 +20,7 @@ struct OpenCLContext {
   // (OpenCLLightSolver::solve_with_each_alone).
   cl_device_type type = 0;
   int index = 0;
+  DeviceMemory memory;  // the largest buffer and all of them, as the device reports them
 };
 
 // Device `index` (heliostand devices numbering; nullopt = the default, default_opencl_device: the first GPU, else

@@ -18,6 +18,7 @@
 #include "core/seconds_since.hpp"
 #include "light/celestial_sphere.hpp"
 #include "light/far_field.hpp"
+#include "light/far_field_buffers.hpp"
 #include "light/far_field_margin.hpp"
 #include "light/light_sum.hpp"
 #include "light/near_field.hpp"
@@ -46,19 +47,6 @@ template <typename T>
 cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
   return read_only(context, std::span<const T>(data));
 }
-
-// Entries per cell of the far-field table as the culled kernel reads it: every patch, rounded up to eight
-// (cl/far_field.cl, far_field_by_cell). The kernels get it as the build option FAR_ROW.
-std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8; }
-
-// The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding.
-std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count) {
-  return std::size_t(far_field_table_budget_cells(p, patch_count) * far_row(patch_count) * sizeof(float));
-}
-
-// The sweep's lookups read up to eight floats past a row's last column (cl/voxel_grid.clh, grid_sample_shifted8):
-// the density's and the swept table's buffers hold that much more.
-constexpr std::size_t sweep_overread_floats = 16;
 
 // A device buffer kept from one solve to the next, and its size.
 struct KeptBuffer {
@@ -273,6 +261,9 @@ struct OpenCLLightSolver::AloneLight {
 OpenCLLightSolver::OpenCLLightSolver(const LightParameters& parameters, const compute::OpenCLContext& device)
     : parameters_(parameters) {
   validate(parameters_);
+  // Before the kernels' build: a cap the device cannot hold is said now, not at the first solve's clCreateBuffer.
+  if (auto reason = far_field_beyond_device(parameters_, device.memory, "opencl:" + device.description))
+    throw FarFieldBeyondDevice(*reason);
   device_ = std::make_unique<Device>();
   device_->cl = device;
   const auto options = compute::KernelOptions()

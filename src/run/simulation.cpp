@@ -13,6 +13,7 @@
 #include "io/checkpoint_state.hpp"
 #include "io/root_vtk.hpp"
 #include "io/stand_output.hpp"
+#include "light/far_field_buffers.hpp"
 #include "light/make_light_solver.hpp"
 #include "run/run_checkpoints.hpp"
 #include "stand/establishment.hpp"
@@ -149,6 +150,7 @@ RunSolvers open_solvers(const Scenario& scenario, const SimulationOptions& optio
   auto backend = compute::ComputeBackend::open(
       options.device.empty() ? scenario.run.device : compute::DeviceChoice::parse(options.device));
   spdlog::info("compute backend (light and roots): {}", backend.name());
+  refuse_far_field_beyond_device(stand_light, backend, scenario.file.string());
   LightParameters open_grown = stand_light;
   open_grown.exact = true;
   open_grown.periodic = false;

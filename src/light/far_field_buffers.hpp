@@ -1,0 +1,47 @@
+#pragma once
+// The far-field table's two buffers on an OpenCL device, and whether a device holds them. The OpenCL solver keeps the
+// table in two layouts, the sweep's and the culled kernel's (opencl_light_solver.cpp), each within the cap
+// `far_field_table_mb`. A device allocates no single buffer beyond its limit (PoCL on a 24 GiB machine here: 4 GiB),
+// so a cap above it failed at the table's first clCreateBuffer, after the stand was established and its tables
+// begun. The solver checks the cap when it is made instead, and says the largest cap the device holds.
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "compute/compute_backend.hpp"
+#include "compute/device_memory.hpp"
+#include "light/light_parameters.hpp"
+
+namespace heliostand {
+
+// Entries per cell of the table as the culled kernel reads it: every patch, rounded up to eight (cl/far_field.cl,
+// far_field_by_cell). The kernels get it as the build option FAR_ROW.
+std::size_t far_row(std::size_t patch_count);
+
+// The sweep's lookups read up to eight floats past a row's last column (cl/voxel_grid.clh, grid_sample_shifted8):
+// the density's and the swept table's buffers hold that much more.
+inline constexpr std::size_t sweep_overread_floats = 16;
+
+// The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding. The swept
+// layout takes at most that and its over-read.
+std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count);
+
+// Why a device named `device_name` with `memory` cannot hold both layouts at p.far_field_table_mb, with the largest
+// cap it can hold; std::nullopt when it can, and for the exact light, which has no far field.
+std::optional<std::string> far_field_beyond_device(const LightParameters& p, const compute::DeviceMemory& memory,
+                                                   const std::string& device_name);
+
+// InputError under key 'light.far_field_table_mb' of `file` where `backend`'s device cannot hold the far field at p's
+// cap: a run's check before any output (run/simulation.cpp, `bench light --stand`).
+void refuse_far_field_beyond_device(const LightParameters& p, const compute::ComputeBackend& backend,
+                                    const std::string& file);
+
+// OpenCLLightSolver's constructor throws this with far_field_beyond_device's reason; a run names the scenario's key
+// with it first (refuse_far_field_beyond_device).
+class FarFieldBeyondDevice : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace heliostand

@@ -1,0 +1,79 @@
+// A far-field cap the OpenCL device cannot hold, as a user meets it. `heliostand devices` lists what each device holds
+// in one buffer; `grow` and `bench light --stand` refuse a scenario whose cap is beyond the chosen device's, under the
+// scenario's key, before any output (light/far_field_buffers.hpp). Before, such a run was established, wrote its
+// tables' headers and failed at the first solve's clCreateBuffer (exit 1). Each test runs heliostand with
+// POCL_MEMORY_LIMIT=1, under which PoCL reports 256 MiB a buffer (other OpenCL runtimes ignore it), and sets the cap
+// one MB above what `heliostand devices` lists for the default device under the same environment.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "cli/cli_runner.hpp"
+#include "compute/device_choice.hpp"
+
+namespace heliostand::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string small_pocl = "POCL_MEMORY_LIMIT=1 ";
+
+CliResult run_on_small_pocl(const std::string& arguments) {
+  return run_command(small_pocl + heliostand_command() + " " + arguments);
+}
+
+// The default device's "N MB a buffer" in `heliostand devices`; -1 when the listing has none.
+double default_device_buffer_mb() {
+  const CliResult devices = run_on_small_pocl("devices");
+  std::smatch match;
+  const std::regex default_line(R"(\* opencl:[0-9]+ .*, ([0-9]+) MB a buffer\)  \[default\])");
+  return std::regex_search(devices.output, match, default_line) ? std::stod(match[1]) : -1;
+}
+
+// stands/tiny with `far_field_table_mb = cap_mb`.
+fs::path tiny_with_cap(const std::string& name, double cap_mb) {
+  const auto stand = scratch_folder(name);
+  fs::create_directories(stand);
+  std::string scenario = read_text(source_path("stands/tiny/scenario.toml"));
+  const std::string cap = "far_field_table_mb = " + std::to_string(int(cap_mb)) + "\n";
+  scenario.replace(scenario.find("[light]\n"), 8, "[light]\n" + cap);
+  std::ofstream(stand / "scenario.toml") << scenario;
+  fs::copy_file(source_path("stands/tiny/survey.csv"), stand / "survey.csv");
+  return stand / "scenario.toml";
+}
+
+TEST(FarFieldDeviceCli, GrowRefusesACapBeyondTheDeviceBeforeAnyOutput) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
+  const double buffer_mb = default_device_buffer_mb();
+  ASSERT_GT(buffer_mb, 0) << run_on_small_pocl("devices").output;
+  const int cap = int(buffer_mb) + 1;
+  const auto scenario = tiny_with_cap("far_field_device_grow", cap);
+  const auto folder = scratch_folder("far_field_device_grow_out");
+  const auto run = run_on_small_pocl("grow " + scenario.string() + " --out " + folder.string());
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to " +
+                            std::to_string(cap) + " MB takes two buffers"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("lower it to "), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for a cap the device cannot hold";
+}
+
+TEST(FarFieldDeviceCli, BenchLightRefusesSuchAStandBeforeAnyJson) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
+  const double buffer_mb = default_device_buffer_mb();
+  ASSERT_GT(buffer_mb, 0) << run_on_small_pocl("devices").output;
+  const auto scenario = tiny_with_cap("far_field_device_bench", buffer_mb + 1);
+  const auto json = scratch_folder("far_field_device_bench_out") / "light.json";
+  fs::create_directories(json.parent_path());
+  const auto run = run_on_small_pocl("bench light --stand " + scenario.string() + " --device opencl -o " +
+                                     json.string() + " -q");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(json)) << "no JSON for a stand the device cannot light";
+}
+
+}  // namespace
+}  // namespace heliostand::testing
