@@ -1,10 +1,16 @@
 // heliostand check SCENARIO: read and validate the scenario and its survey, write nothing.
+#include <cmath>
+#include <exception>
+#include <string>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "compute/compute_backend.hpp"
 #include "core/usable_memory.hpp"
+#include "light/far_field_buffers.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/memory_estimate.hpp"
 #include "stand/thinning.hpp"
@@ -39,6 +45,25 @@ void print_memory(const Scenario& scenario) {
   fmt::print("{} (docs/performance.md \"Memory\")\n", line);
 }
 
+// The device `grow` would open (run.device; `--device` may choose another) and whether it holds the far-field
+// table's cap (light/far_field_buffers.hpp). Like the memory, the device is the machine's, not the input's: check
+// says that grow would refuse the cap here and still succeeds.
+void print_device(const Scenario& scenario) {
+  std::string line;
+  try {
+    const auto backend = compute::ComputeBackend::open(scenario.run.device);
+    line = backend.name();
+    if (const auto memory = backend.memory()) {
+      line += fmt::format(", {:.0f} MB a buffer", std::floor(double(memory->buffer_bytes) / 1e6));
+      if (far_field_beyond_device(scenario.stand_light(), *memory, backend.name()))
+        line += fmt::format(": grow refuses light.far_field_table_mb = {} MB here", scenario.light.far_field_table_mb);
+    }
+  } catch (const std::exception& e) {  // a device this machine does not have (opencl:N)
+    line = e.what();
+  }
+  fmt::print("device     {}\n", line);
+}
+
 void print_summary(const Scenario& scenario) {
   double basal_area = 0;
   for (const auto& tree : scenario.survey.trees) basal_area += basal_area_m2(tree.dbh_cm);
@@ -63,6 +88,7 @@ void print_summary(const Scenario& scenario) {
   if (!habitat.empty())
     fmt::print("habitat    {} trees with {} hollows: {}\n", habitat.size(), hollows, fmt::join(habitat, ", "));
   print_memory(scenario);
+  print_device(scenario);
 }
 
 }  // namespace

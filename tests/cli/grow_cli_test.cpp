@@ -383,6 +383,9 @@ TEST(CheckCli, GoodScenarioPrintsASummary) {
   // grow's estimate (1 GiB + 62 x 1.75 MiB), which every machine the tests run on holds
   EXPECT_NE(run.output.find("memory     about 1.1 GiB estimated, of the "), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("grow refuses it here"), std::string::npos) << run.output;
+  // the device grow would open here, which holds the default far-field cap (512 MB)
+  EXPECT_NE(run.output.find("\ndevice     "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("grow refuses light.far_field_table_mb"), std::string::npos) << run.output;
 }
 
 TEST(CheckCli, BadKeysAreListedWithTheirPathAndExitTwo) {

@@ -1,6 +1,6 @@
 // A far-field cap the OpenCL device cannot hold, as a user meets it. `heliostand devices` lists what each device holds
 // in one buffer; `grow` and `bench light --stand` refuse a scenario whose cap is beyond the chosen device's, under the
-// scenario's key, before any output (light/far_field_buffers.hpp). Before, such a run was established, wrote its
+// scenario's key, before any output (light/far_field_buffers.hpp), and `check` says so. Before, such a run was established, wrote its
 // tables' headers and failed at the first solve's clCreateBuffer (exit 1). Each test runs heliostand with
 // POCL_MEMORY_LIMIT=1, under which PoCL reports 256 MiB a buffer (other OpenCL runtimes ignore it), and sets the cap
 // one MB above what `heliostand devices` lists for the default device under the same environment.
@@ -57,6 +57,23 @@ TEST(FarFieldDeviceCli, GrowRefusesACapBeyondTheDeviceBeforeAnyOutput) {
       << run.output;
   EXPECT_NE(run.output.find("lower it to "), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(folder)) << "nothing may be written for a cap the device cannot hold";
+}
+
+// check reads such a scenario as good input (another device may hold it) and says that grow refuses it here.
+TEST(FarFieldDeviceCli, CheckSaysGrowWouldRefuseTheCapHere) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
+  const double buffer_mb = default_device_buffer_mb();
+  ASSERT_GT(buffer_mb, 0) << run_on_small_pocl("devices").output;
+  const int cap = int(buffer_mb) + 1;
+  const auto beyond = run_on_small_pocl("check " + tiny_with_cap("far_field_device_check", cap).string());
+  EXPECT_EQ(beyond.status, 0) << beyond.output;
+  EXPECT_NE(beyond.output.find(", " + std::to_string(int(buffer_mb)) + " MB a buffer: grow refuses "
+                               "light.far_field_table_mb = " + std::to_string(cap) + " MB here"),
+            std::string::npos)
+      << beyond.output;
+  const auto within = run_on_small_pocl("check " + tiny_with_cap("far_field_device_check_within", cap - 1).string());
+  EXPECT_EQ(within.status, 0) << within.output;
+  EXPECT_NE(within.output.find(" MB a buffer\n"), std::string::npos) << within.output;
 }
 
 TEST(FarFieldDeviceCli, BenchLightRefusesSuchAStandBeforeAnyJson) {
