@@ -13,11 +13,11 @@
 namespace heliostand {
 namespace {
 
-constexpr std::uint64_t gib = std::uint64_t(1) << 30;
+constexpr std::uint64_t gib_bytes = std::uint64_t(1) << 30;
 // PoCL 3.1 on the 2-core, 24 GiB EPYC (`clinfo`): 4 GiB a buffer, 11 771 043 840 bytes in all.
-constexpr compute::DeviceMemory pocl_here{4 * gib, 11771043840};
+constexpr compute::DeviceMemory pocl_here{4 * gib_bytes, 11771043840};
 
-LightParameters culled(double cap_mb, int bands = 16, int sectors = 32) {
+LightParameters culled_at_cap(double cap_mb, int bands = 16, int sectors = 32) {
   LightParameters p;
   p.exact = false;
   p.far_field_table_mb = cap_mb;
@@ -36,17 +36,17 @@ double advised_cap(const std::string& reason) {
 TEST(FarFieldBuffers, TheLayoutByCellTakesTheCapWithItsRowsPadded) {
   EXPECT_EQ(far_row(512), 512u);
   EXPECT_EQ(far_row(30), 32u);  // a 6 x 5 sky: rows rounded up to eight entries
-  EXPECT_EQ(far_table_cap_bytes(culled(512), 512), 512'000'000u);
-  EXPECT_EQ(far_table_cap_bytes(culled(300, 6, 5), 30), 320'000'000u);
+  EXPECT_EQ(far_table_cap_bytes(culled_at_cap(512), 512), 512'000'000u);
+  EXPECT_EQ(far_table_cap_bytes(culled_at_cap(300, 6, 5), 30), 320'000'000u);
 }
 
 TEST(FarFieldBuffers, TheDefaultCapFitsTheDeviceHere) {
-  EXPECT_EQ(far_field_beyond_device(culled(LightParameters{}.far_field_table_mb), pocl_here, "pocl"), std::nullopt);
+  EXPECT_EQ(far_field_beyond_device(culled_at_cap(LightParameters{}.far_field_table_mb), pocl_here, "pocl"), std::nullopt);
 }
 
 TEST(FarFieldBuffers, ACapBeyondOneBufferIsRefusedWithTheLargestThatFits) {
-  EXPECT_EQ(far_field_beyond_device(culled(4294), pocl_here, "pocl"), std::nullopt);  // 4 294 000 064 bytes
-  const auto reason = far_field_beyond_device(culled(6000), pocl_here, "pocl");
+  EXPECT_EQ(far_field_beyond_device(culled_at_cap(4294), pocl_here, "pocl"), std::nullopt);  // 4 294 000 064 bytes
+  const auto reason = far_field_beyond_device(culled_at_cap(6000), pocl_here, "pocl");
   ASSERT_TRUE(reason);
   EXPECT_NE(reason->find("a far-field table of up to 6000 MB takes two buffers of up to 6000.0 MB each on the device "
                          "'pocl', which holds at most 4294.9 MB a buffer and 11771.0 MB in all"),
@@ -54,13 +54,13 @@ TEST(FarFieldBuffers, ACapBeyondOneBufferIsRefusedWithTheLargestThatFits) {
       << *reason;
   EXPECT_EQ(advised_cap(*reason), 4294) << *reason;
   EXPECT_NE(reason->find("or choose another device (--device, `heliostand devices`)"), std::string::npos) << *reason;
-  EXPECT_TRUE(far_field_beyond_device(culled(4295), pocl_here, "pocl"));
+  EXPECT_TRUE(far_field_beyond_device(culled_at_cap(4295), pocl_here, "pocl"));
 }
 
 TEST(FarFieldBuffers, BothLayoutsMustFitInTheDevicesMemory) {
-  const compute::DeviceMemory wide_buffers{100 * gib, 8'000'000'000};  // one buffer may take it all; two may not
-  EXPECT_EQ(far_field_beyond_device(culled(3999), wide_buffers, "gpu"), std::nullopt);
-  const auto reason = far_field_beyond_device(culled(4500), wide_buffers, "gpu");
+  const compute::DeviceMemory wide_buffers{100 * gib_bytes, 8'000'000'000};  // one buffer may take it all; two may not
+  EXPECT_EQ(far_field_beyond_device(culled_at_cap(3999), wide_buffers, "gpu"), std::nullopt);
+  const auto reason = far_field_beyond_device(culled_at_cap(4500), wide_buffers, "gpu");
   ASSERT_TRUE(reason);
   EXPECT_EQ(advised_cap(*reason), 3999) << *reason;  // 2 x 4 000 000 000 bytes and the over-read do not fit
 }
@@ -68,34 +68,34 @@ TEST(FarFieldBuffers, BothLayoutsMustFitInTheDevicesMemory) {
 // Whatever the device and the sky, the advised cap fits and one MB more does not.
 TEST(FarFieldBuffers, TheAdvisedCapIsTheLargestThatFits) {
   const compute::DeviceMemory devices[] = {pocl_here,
-                                           {256 * (std::uint64_t(1) << 20), gib},
-                                           {4 * gib, 6 * gib},
+                                           {256 * (std::uint64_t(1) << 20), gib_bytes},
+                                           {4 * gib_bytes, 6 * gib_bytes},
                                            {35'000'000'000, 150'000'000'000},
                                            {1'000'000'064, 2'000'000'128},
                                            {1'000'000'063, 2'000'000'128}};
   const int skies[][2] = {{16, 32}, {8, 16}, {6, 5}, {2, 1}};
   for (const auto& device : devices)
     for (const auto& sky : skies) {
-      const auto reason = far_field_beyond_device(culled(1e6, sky[0], sky[1]), device, "d");
+      const auto reason = far_field_beyond_device(culled_at_cap(1e6, sky[0], sky[1]), device, "d");
       ASSERT_TRUE(reason);
       const double largest = advised_cap(*reason);
       ASSERT_GE(largest, 1) << *reason;
-      EXPECT_EQ(far_field_beyond_device(culled(largest, sky[0], sky[1]), device, "d"), std::nullopt)
+      EXPECT_EQ(far_field_beyond_device(culled_at_cap(largest, sky[0], sky[1]), device, "d"), std::nullopt)
           << device.buffer_bytes << " " << sky[0] << "x" << sky[1];
-      EXPECT_TRUE(far_field_beyond_device(culled(largest + 1, sky[0], sky[1]), device, "d"))
+      EXPECT_TRUE(far_field_beyond_device(culled_at_cap(largest + 1, sky[0], sky[1]), device, "d"))
           << device.buffer_bytes << " " << sky[0] << "x" << sky[1];
     }
 }
 
 TEST(FarFieldBuffers, ADeviceTooSmallForAnyCapIsToldToChooseAnother) {
-  const auto reason = far_field_beyond_device(culled(1), {500'000, 1'000'000}, "tiny");
+  const auto reason = far_field_beyond_device(culled_at_cap(1), {500'000, 1'000'000}, "tiny");
   ASSERT_TRUE(reason);
   EXPECT_EQ(advised_cap(*reason), -1) << *reason;
   EXPECT_NE(reason->find(": choose another device (--device"), std::string::npos) << *reason;
 }
 
 TEST(FarFieldBuffers, TheExactLightHasNoFarFieldToHold) {
-  LightParameters exact = culled(1e6);
+  LightParameters exact = culled_at_cap(1e6);
   exact.exact = true;
   EXPECT_EQ(far_field_beyond_device(exact, {1, 1}, "tiny"), std::nullopt);
 }
