@@ -1,9 +1,9 @@
 // A far-field cap the OpenCL device cannot hold, as a user meets it. `heliostand devices` lists what each device holds
 // in one buffer; `grow` and `bench light --stand` refuse a scenario whose cap is beyond the chosen device's, under the
-// scenario's key, before any output (light/far_field_buffers.hpp), and `check` says so. Before, such a run was established, wrote its
-// tables' headers and failed at the first solve's clCreateBuffer (exit 1). Each test runs heliostand with
-// POCL_MEMORY_LIMIT=1, under which PoCL reports 256 MiB a buffer (other OpenCL runtimes ignore it), and sets the cap
-// one MB above what `heliostand devices` lists for the default device under the same environment.
+// scenario's key, before any output (light/far_field_buffers.hpp), and `check` says so. Before, such a run was
+// established, wrote its tables' headers and failed at the first solve's clCreateBuffer (exit 1). Each test runs
+// heliostand with POCL_MEMORY_LIMIT=1, under which PoCL reports 256 MiB a buffer (other OpenCL runtimes ignore it), and
+// sets the cap one MB above what `heliostand devices` lists for the default device under the same environment.
 #include <gtest/gtest.h>
 
 #include <regex>

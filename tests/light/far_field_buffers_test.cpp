@@ -41,7 +41,8 @@ TEST(FarFieldBuffers, TheLayoutByCellTakesTheCapWithItsRowsPadded) {
 }
 
 TEST(FarFieldBuffers, TheDefaultCapFitsTheDeviceHere) {
-  EXPECT_EQ(far_field_beyond_device(culled_at_cap(LightParameters{}.far_field_table_mb), pocl_here, "pocl"), std::nullopt);
+  const LightParameters at_default = culled_at_cap(LightParameters{}.far_field_table_mb);
+  EXPECT_EQ(far_field_beyond_device(at_default, pocl_here, "pocl"), std::nullopt);
 }
 
 TEST(FarFieldBuffers, ACapBeyondOneBufferIsRefusedWithTheLargestThatFits) {
