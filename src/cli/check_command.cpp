@@ -1,5 +1,4 @@
 // heliostand check SCENARIO: read and validate the scenario and its survey, write nothing.
-#include <cmath>
 #include <exception>
 #include <string>
 
@@ -9,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "compute/compute_backend.hpp"
+#include "compute/device_memory.hpp"
 #include "core/usable_memory.hpp"
 #include "light/far_field_buffers.hpp"
 #include "scenario/scenario.hpp"
@@ -54,7 +54,7 @@ void print_device(const Scenario& scenario) {
     const auto backend = compute::ComputeBackend::open(scenario.run.device);
     line = backend.name();
     if (const auto memory = backend.memory()) {
-      line += fmt::format(", {:.0f} MB a buffer", std::floor(double(memory->buffer_bytes) / 1e6));
+      line += fmt::format(", {:.0f} MB a buffer", compute::whole_megabytes(memory->buffer_bytes));
       if (far_field_beyond_device(scenario.stand_light(), *memory, backend.name()))
         line += fmt::format(": grow refuses light.far_field_table_mb = {} MB here", scenario.light.far_field_table_mb);
     }

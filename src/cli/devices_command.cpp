@@ -1,11 +1,11 @@
 #include "cli/devices_command.hpp"
 
-#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "compute/device_choice.hpp"
+#include "compute/device_memory.hpp"
 
 namespace heliostand::cli {
 
@@ -21,8 +21,8 @@ void add_devices_command(CLI::App& app) {
       std::cout << fmt::format("{} opencl:{}  {} / {}  ({}, {}, {} compute units, {:.0f} MB memory, {:.0f} MB a "
                                "buffer){}\n",
                                d.is_default ? "*" : " ", d.index, d.platform, d.name, d.type, d.version,
-                               d.compute_units, std::floor(double(d.memory.total_bytes) / 1e6),
-                               std::floor(double(d.memory.buffer_bytes) / 1e6), d.is_default ? "  [default]" : "");
+                               d.compute_units, compute::whole_megabytes(d.memory.total_bytes),
+                               compute::whole_megabytes(d.memory.buffer_bytes), d.is_default ? "  [default]" : "");
     std::cout << fmt::format("{} reference  plain C++ solvers of light and roots (the oracles; always available){}\n",
                              list.empty() ? "*" : " ", list.empty() ? "  [default]" : "");
   });

@@ -3,7 +3,6 @@
 // fails only when a stand's table reaches it, at clCreateBuffer.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <regex>
 #include <string>
 #include <vector>
@@ -36,7 +35,7 @@ TEST(OpenCLFarFieldBuffers, ACapTheDeviceCannotHoldIsRefusedWhenTheSolverIsMade)
   p.exact = false;
   p.cutoff_m = 1.5;
   p.far_field_cell_m = 0.5;
-  p.far_field_table_mb = std::floor(double(backend->memory()->buffer_bytes) / 1e6) + 1;
+  p.far_field_table_mb = compute::whole_megabytes(backend->memory()->buffer_bytes) + 1;
   std::string reason;
   try {
     OpenCLLightSolver beyond(p, *backend->opencl());
