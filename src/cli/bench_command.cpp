@@ -20,6 +20,8 @@
 #include "run/established_canopy.hpp"
 #include "run/stand_benchmark.hpp"
 #include "scenario/scenario.hpp"
+#include "scenario/scenario_limits.hpp"
+#include "stand/memory_estimate.hpp"
 
 namespace heliostand::cli {
 namespace {
@@ -67,17 +69,35 @@ std::string check_light_device(const std::string& text) {
   }
 }
 
+// Where `backend`'s device cannot hold the far field at p's cap, a usage error naming `flag`, which gave the cap
+// (light/far_field_buffers.hpp): the same words as a scenario's refusal, under the flag instead of a key.
+void refuse_flag_beyond_device(LightParameters p, const compute::ComputeBackend& backend, const CLI::Option& flag) {
+  p.exact = false;  // the benchmark's culled solver's (light_benchmark.cpp)
+  const auto memory = backend.memory();
+  if (!memory) return;
+  if (auto reason = far_field_beyond_device(p, *memory, backend.name()))
+    throw CLI::ValidationError(flag.get_name(), *reason);
+}
+
 // The OpenCL device opened before any canopy is lit, so that a missing one fails at once rather than after the
 // reference solvers' minutes on a large canopy (exit 1, as `grow` fails on a missing device).
-// A stand whose far-field cap that device cannot hold is named then too (light/far_field_buffers.hpp).
-void open_light_device(const std::string& text, const std::vector<LightBenchmarkStand>& stands) {
+// A far-field cap that device cannot hold is named then too: the synthetic canopies' and a stand's given by
+// --far-field-table-mb under that flag, a stand's own under its scenario's key.
+void open_light_device(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands,
+                       const CLI::Option& table_flag) {
+  const std::string& text = options.opencl_device;
   if (text == "none") return;
   const auto choice = compute::DeviceChoice::parse(text);
   if (!compute::opencl_backend_built && choice.kind == compute::DeviceChoice::Kind::opencl)
     throw std::runtime_error("device '" + text + "': this build of heliostand has no OpenCL backend; --device none "
                              "runs the reference solvers alone");
   const auto backend = compute::ComputeBackend::open(choice);
+  if (!options.ball_counts.empty()) refuse_flag_beyond_device(options.parameters, backend, table_flag);
   for (const auto& stand : stands) {
+    if (table_flag.count() > 0) {
+      refuse_flag_beyond_device(stand.parameters, backend, table_flag);
+      continue;
+    }
     LightParameters culled = stand.parameters;  // the benchmark's culled solver's (light_benchmark.cpp)
     culled.exact = false;
     refuse_far_field_beyond_device(culled, backend, stand.name);
@@ -109,13 +129,16 @@ void add_bench_stand_command(CLI::App& bench) {
   });
 }
 
-// The command-line light flags that were given replace the stand's own [light] values; the others leave them.
+// The command-line light flags that were given replace the stand's own [light] values; the others leave them. The
+// far-field cap replaces the scenario's before its stand is established, so that the stand's memory is estimated with
+// it (the callback of `bench light`); the others after.
 struct LightOverrides {
   CLI::Option* cutoff = nullptr;
   CLI::Option* far_field_cell = nullptr;
   CLI::Option* hand_over = nullptr;
   CLI::Option* periodic = nullptr;
   CLI::Option* bias_correction = nullptr;
+  CLI::Option* far_field_table = nullptr;
 
   void apply(const LightParameters& given, LightParameters& stand) const {
     if (cutoff->count() > 0) stand.cutoff_m = given.cutoff_m;
@@ -127,20 +150,39 @@ struct LightOverrides {
 };
 
 // A synthetic canopy far beyond the machine is refused before any canopy is made, with its estimate
-// (light/light_benchmark.hpp), as a run's stand is (stand/memory_estimate.hpp). Nothing is refused when the usable
-// memory cannot be read.
-void refuse_canopies_beyond_this_machine(const std::vector<std::size_t>& ball_counts, const CLI::Option& balls) {
+// (light/light_benchmark.hpp), as a run's stand is (stand/memory_estimate.hpp): under --far-field-table-mb where the
+// canopy would fit at the default cap, else under --balls. Nothing is refused when the usable memory cannot be read.
+void refuse_canopies_beyond_this_machine(const std::vector<std::size_t>& ball_counts, const LightParameters& p,
+                                         const CLI::Option& balls, const CLI::Option& table_flag) {
   const auto usable = usable_memory_bytes();
   if (!usable) return;
+  LightParameters default_table = p;
+  default_table.far_field_table_mb = LightParameters{}.far_field_table_mb;
   for (std::size_t ball_count : ball_counts) {
-    const std::uint64_t needed = synthetic_canopy_memory_bytes(ball_count);
-    if (needed > *usable)
-      throw CLI::ValidationError(
-          balls.get_name(),
-          fmt::format("{} leaf balls need about {} ({}, docs/performance.md \"Memory\"), more than the {} this "
-                      "machine lets the benchmark use",
-                      ball_count, gibibytes(needed), synthetic_canopy_memory_formula(), gibibytes(*usable)));
+    const std::uint64_t needed = synthetic_canopy_memory_bytes(ball_count, p);
+    if (needed <= *usable) continue;
+    const std::string estimate = fmt::format("{} ({}, docs/performance.md \"Memory\")", gibibytes(needed),
+                                             synthetic_canopy_memory_formula(p));
+    if (synthetic_canopy_memory_bytes(ball_count, default_table) <= *usable)
+      throw CLI::ValidationError(table_flag.get_name(),
+                                 fmt::format("a far-field table of up to {} MB brings {} leaf balls to about {}, more "
+                                             "than the {} this machine lets the benchmark use: lower it (the far "
+                                             "field's cells grow coarser instead)",
+                                             p.far_field_table_mb, ball_count, estimate, gibibytes(*usable)));
+    throw CLI::ValidationError(balls.get_name(), fmt::format("{} leaf balls need about {}, more than the {} this "
+                                                             "machine lets the benchmark use",
+                                                             ball_count, estimate, gibibytes(*usable)));
   }
+}
+
+// A scenario whose cap --far-field-table-mb replaced, refused under that flag where the cap takes the stand beyond
+// this machine's memory (stand/memory_estimate.hpp). A stand too large at any cap is left to established_canopy,
+// which refuses it under the scenario's own key as `grow` would.
+void refuse_flag_beyond_this_machine(const Scenario& scenario, const std::string& name, const CLI::Option& table_flag) {
+  const auto usable = usable_memory_bytes();
+  if (!usable) return;
+  if (auto reason = far_field_table_beyond_memory(scenario, estimate_run_memory(scenario), *usable))
+    throw CLI::ValidationError(table_flag.get_name(), name + ": " + *reason);
 }
 
 // `heliostand bench light [--balls N ...] [--stand SCENARIO ...]` (light/light_benchmark.hpp).
@@ -181,6 +223,13 @@ void add_bench_light_command(CLI::App& bench) {
                             overrides_stand)
           ->check(amount_between_check(0.0, max_far_field_hand_over_cells))
           ->capture_default_str();
+  overrides->far_field_table =
+      light->add_option("--far-field-table-mb", options->parameters.far_field_table_mb,
+                        std::string("Memory cap of the far-field table, MB; an OpenCL device holds it twice (beyond "
+                                    "it the cells grow coarser)") +
+                            overrides_stand)
+          ->check(amount_between_check(1.0, limit::far_field_table_mb.max))
+          ->capture_default_str();
   overrides->periodic = light->add_flag("--periodic", options->parameters.periodic,
                                         std::string("Treat the plot as a torus") + overrides_stand);
   overrides->bias_correction =
@@ -220,15 +269,20 @@ void add_bench_light_command(CLI::App& bench) {
     // stdout carries the JSON; the progress lines go to the default logger, which writes to stderr at the level
     // -q / -v chose (cli/app.cpp)
     if (!scenarios->empty() && balls->count() == 0) options->ball_counts.clear();  // only the stands asked for
-    refuse_canopies_beyond_this_machine(options->ball_counts, *balls);
+    refuse_canopies_beyond_this_machine(options->ball_counts, options->parameters, *balls, *overrides->far_field_table);
     // Every stand first: a bad scenario stops the command before any solver runs or any JSON is written.
     std::vector<LightBenchmarkStand> stands;
-    for (const auto& scenario : *scenarios) {
-      stands.push_back(established_canopy(scenario));
+    for (const auto& file : *scenarios) {
+      Scenario scenario = load_scenario(file);
+      if (overrides->far_field_table->count() > 0) {
+        scenario.light.far_field_table_mb = options->parameters.far_field_table_mb;
+        refuse_flag_beyond_this_machine(scenario, file, *overrides->far_field_table);
+      }
+      stands.push_back(established_canopy(scenario, file));
       overrides->apply(options->parameters, stands.back().parameters);
     }
     // After the input's own checks (a bad scenario is the error named first), before the solvers:
-    open_light_device(options->opencl_device, stands);
+    open_light_device(*options, stands, *overrides->far_field_table);
     check_output_writable(*output);
     print_json(run_light_benchmark(*options, stands), *output);
   });

@@ -13,6 +13,8 @@ namespace heliostand {
 namespace {
 
 constexpr double bytes_per_mb = 1e6;  // far_field_table_mb's unit
+constexpr double default_cap_mb = LightParameters{}.far_field_table_mb;
+constexpr double table_layouts = 2;  // the sweep's and the culled kernel's (opencl_light_solver.cpp)
 constexpr std::uint64_t overread_bytes = sweep_overread_floats * sizeof(float);
 
 // A device's figure in MB, rounded down: the cap a user may take from the message must fit.
@@ -61,6 +63,15 @@ std::optional<std::string> far_field_beyond_device(const LightParameters& p, con
                      p.far_field_table_mb,
                      double(far_table_cap_bytes(p, patch_count(p)) + overread_bytes) / bytes_per_mb, device_name,
                      megabytes_down(memory.buffer_bytes), megabytes_down(memory.total_bytes), advice);
+}
+
+double far_field_table_bytes_beyond_default(const LightParameters& p) {
+  if (p.exact || p.far_field_table_mb <= default_cap_mb) return 0;
+  return table_layouts * (p.far_field_table_mb - default_cap_mb) * bytes_per_mb;
+}
+
+std::string far_field_table_memory_term() {
+  return fmt::format("twice the far-field table's cap above {:g} MB", default_cap_mb);
 }
 
 void refuse_far_field_beyond_device(const LightParameters& p, const compute::ComputeBackend& backend,

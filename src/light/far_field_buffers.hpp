@@ -32,6 +32,15 @@ std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_coun
 std::optional<std::string> far_field_beyond_device(const LightParameters& p, const compute::DeviceMemory& memory,
                                                    const std::string& device_name);
 
+// The memory the table may take beyond its default cap, which the fixed share of a run's memory estimate and of the
+// light benchmark's already holds (stand/memory_estimate.hpp, light/light_benchmark.hpp): the OpenCL solver's two
+// layouts, each up to the cap, so twice the cap above the default; 0 at or below it, and for the exact light, which
+// has no far field. An upper bound: a stand whose table stays below the cap takes less.
+double far_field_table_bytes_beyond_default(const LightParameters& p);
+
+// That term of the estimates' formulas in words: "twice the far-field table's cap above 512 MB".
+std::string far_field_table_memory_term();
+
 // InputError under key 'light.far_field_table_mb' of `file` where `backend`'s device cannot hold the far field at p's
 // cap: a run's check before any output (run/simulation.cpp, `bench light --stand`).
 void refuse_far_field_beyond_device(const LightParameters& p, const compute::ComputeBackend& backend,

@@ -19,6 +19,7 @@
 #include "core/seconds_since.hpp"
 #include "core/usable_memory.hpp"
 #include "geometry/angles.hpp"
+#include "light/far_field_buffers.hpp"
 #include "light/make_light_solver.hpp"
 #include "light/synthetic_canopy.hpp"
 
@@ -165,6 +166,7 @@ Json parameters_json(const LightParameters& p) {
           {"intensity_ratio", p.intensity_ratio},
           {"cutoff_m", p.cutoff_m},
           {"far_field_cell_m", p.far_field_cell_m},
+          {"far_field_table_mb", p.far_field_table_mb},
           {"far_field_bias_correction", p.far_field_bias_correction},
           {"far_field_hand_over_cells", p.far_field_hand_over_cells},
           {"periodic", p.periodic}};
@@ -245,14 +247,17 @@ constexpr double canopy_fixed_bytes = 1.0 * bytes_per_gib, canopy_bytes_per_ball
 
 }  // namespace
 
-std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count) {
-  const double bytes = canopy_fixed_bytes + canopy_bytes_per_ball * static_cast<double>(ball_count);
+std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count, const LightParameters& p) {
+  const double bytes = canopy_fixed_bytes + canopy_bytes_per_ball * static_cast<double>(ball_count) +
+                       far_field_table_bytes_beyond_default(p);
   constexpr auto largest = std::numeric_limits<std::uint64_t>::max();
   return bytes >= static_cast<double>(largest) ? largest : static_cast<std::uint64_t>(bytes);
 }
 
-std::string synthetic_canopy_memory_formula() {
-  return fmt::format("{:g} GiB + {:g} KiB a ball", canopy_fixed_bytes / bytes_per_gib, canopy_bytes_per_ball / 1024.0);
+std::string synthetic_canopy_memory_formula(const LightParameters& p) {
+  return fmt::format("{:g} GiB + {:g} KiB a ball{}", canopy_fixed_bytes / bytes_per_gib,
+                     canopy_bytes_per_ball / 1024.0,
+                     far_field_table_bytes_beyond_default(p) > 0 ? " + " + far_field_table_memory_term() : "");
 }
 
 std::string run_light_benchmark(const LightBenchmarkOptions& options, const std::vector<LightBenchmarkStand>& stands) {

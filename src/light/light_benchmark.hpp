@@ -37,20 +37,22 @@ struct LightBenchmarkStand {
   LightParameters parameters;    // the stand's own (its [light], the plot as the periodic domain)
 };
 
-// The memory the benchmark may need for a synthetic canopy of `ball_count` leaf balls, estimated before it is made so
-// that a count far beyond the machine is refused with the figures (cli/bench_command.cpp) instead of growing until the
-// OOM killer ends it:
+// The memory the benchmark may need for a synthetic canopy of `ball_count` leaf balls lit with `p`, estimated before it
+// is made so that a count far beyond the machine is refused with the figures (cli/bench_command.cpp) instead of growing
+// until the OOM killer ends it:
 //
-//   estimate = 1 GiB + ball_count × 2 KiB
+//   estimate = 1 GiB + ball_count × 2 KiB + 2 × (p.far_field_table_mb − 512 MB, where above)
 //
 // Measured peaks of `bench light --balls N --subsample 20` with every solver but the default one on the subsample
 // (docs/performance.md "Memory"): 637 MiB at 10⁵ balls, 2 217 MiB at 10⁶, about 1.8 kB a ball above some 460 MiB,
-// both rounded up. Like a run's estimate (stand/memory_estimate.hpp) it catches a count ten times too large, not a
-// tight budget. Saturates at the largest std::uint64_t.
-std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count);
+// both rounded up; the far-field table's cap beyond its default as a run's estimate counts it
+// (far_field_table_bytes_beyond_default). Like a run's estimate (stand/memory_estimate.hpp) it catches a count ten
+// times too large, or a cap no machine here holds, not a tight budget. Saturates at the largest std::uint64_t.
+std::uint64_t synthetic_canopy_memory_bytes(std::size_t ball_count, const LightParameters& p);
 
-// The estimate's formula in words, from the same constants ("1 GiB + 2 KiB a ball"), for the refusal.
-std::string synthetic_canopy_memory_formula();
+// The estimate's formula in words, from the same constants ("1 GiB + 2 KiB a ball[ + twice the far-field table's cap
+// above 512 MB]", the last where p's cap is above it), for the refusal.
+std::string synthetic_canopy_memory_formula(const LightParameters& p);
 
 // Runs the benchmark on the synthetic canopies of `options.ball_counts` (with `options.parameters`), then on each
 // of `stands` (with its own parameters), and returns the JSON report; progress goes to spdlog (stderr).

@@ -14,6 +14,7 @@
 // (docs/performance.md "Memory"). It is meant to catch a survey ten times too large, or a cap no machine here holds,
 // not to budget tightly: a run is refused only when the estimate exceeds the memory it may use.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace heliostand {
@@ -27,6 +28,12 @@ struct MemoryEstimate {
 };
 
 MemoryEstimate estimate_run_memory(const Scenario& scenario);
+
+// Why `estimate` exceeds `usable` because of the far-field table's cap: the reason (the cap, the estimate, the
+// formula, the usable memory, what to do) where the stand would fit without the table's share; std::nullopt where the
+// run fits, or where the stand alone does not. `bench light --far-field-table-mb` names its flag with it.
+std::optional<std::string> far_field_table_beyond_memory(const Scenario& scenario, const MemoryEstimate& estimate,
+                                                         std::uint64_t usable);
 
 // Throws InputError when `estimate` exceeds `usable`, with both figures and the formula: under the key
 // 'light.far_field_table_mb' where the stand would fit without the table's share, else 'stand.survey'.

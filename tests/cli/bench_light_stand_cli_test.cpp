@@ -97,8 +97,8 @@ TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
 TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   const fs::path folder = scratch_folder("bench-light-stand-flags");
   // its own cut-off, 5 m, not the command's default (3 m): which value a row used shows
-  const fs::path scenario =
-      tiny_scenario(folder / "scenario.toml", "cutoff_m = 5.0\nfar_field_hand_over_cells = 0.5\n");
+  const fs::path scenario = tiny_scenario(
+      folder / "scenario.toml", "cutoff_m = 5.0\nfar_field_hand_over_cells = 0.5\nfar_field_table_mb = 256\n");
 
   const Bench own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
   ASSERT_EQ(own.cli.status, 0) << own.cli.output;
@@ -107,9 +107,11 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(own_parameters.at("far_field_bias_correction"), true) << "not in the scenario: the default";
   EXPECT_EQ(own_parameters.at("periodic"), false);
   EXPECT_EQ(own_parameters.at("far_field_hand_over_cells"), 0.5) << "no --far-field-hand-over: the scenario's";
+  EXPECT_EQ(own_parameters.at("far_field_table_mb"), 256.0) << "no --far-field-table-mb: the scenario's";
 
   const Bench given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
                                                         " --cutoff 2 --far-field-hand-over 0.75" +
+                                                        " --far-field-table-mb 600" +
                                                         " --no-far-field-bias-correction --periodic" +
                                                         parameters_only);
   ASSERT_EQ(given.cli.status, 0) << given.cli.output;
@@ -122,9 +124,11 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(given_parameters.at("far_field_bias_correction"), false) << "--no-far-field-bias-correction";
   EXPECT_EQ(given_parameters.at("periodic"), true);
   EXPECT_EQ(given_parameters.at("far_field_hand_over_cells"), 0.75) << "--far-field-hand-over replaces the scenario's";
+  EXPECT_EQ(given_parameters.at("far_field_table_mb"), 600.0) << "--far-field-table-mb replaces the scenario's";
   EXPECT_EQ(given_parameters.at("far_field_cell_m"), 1.0) << "not given: the scenario's (the default)";
   EXPECT_EQ(given_parameters.at("sky_bands"), 8) << "not a flag: always the scenario's";
   EXPECT_EQ(given.json.at("parameters").at("cutoff_m"), 2.0) << "the synthetic stands' parameters";
+  EXPECT_EQ(given.json.at("parameters").at("far_field_table_mb"), 600.0);
 }
 
 // A scenario in a folder named in a legacy encoding (Latin-1 "café": byte 0xe9, not UTF-8): the row names it with that

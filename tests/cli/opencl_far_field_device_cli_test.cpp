@@ -4,6 +4,7 @@
 // established, wrote its tables' headers and failed at the first solve's clCreateBuffer (exit 1). Each test runs
 // heliostand with POCL_MEMORY_LIMIT=1, under which PoCL reports 256 MiB a buffer (other OpenCL runtimes ignore it), and
 // sets the cap one MB above what `heliostand devices` lists for the default device under the same environment.
+// `bench light --far-field-table-mb` gives the cap on the command line; its refusal names the flag.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -90,6 +91,40 @@ TEST(FarFieldDeviceCli, BenchLightRefusesSuchAStandBeforeAnyJson) {
             std::string::npos)
       << run.output;
   EXPECT_FALSE(fs::exists(json)) << "no JSON for a stand the device cannot light";
+}
+
+// `bench light --far-field-table-mb`: a cap the device cannot hold is refused under the flag, for the synthetic
+// canopies and for a stand whose cap the flag replaced, before any solver runs; the cap the message advises is lit.
+TEST(FarFieldDeviceCli, BenchLightRefusesAGivenCapBeyondTheDeviceUnderItsFlag) {
+  if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
+  const double buffer_mb = default_device_buffer_mb();
+  ASSERT_GT(buffer_mb, 0) << run_on_small_pocl("devices").output;
+  const auto folder = scratch_folder("far_field_device_bench_flag");
+  fs::create_directories(folder);
+  const auto json = folder / "light.json";
+  const std::string synthetic = "bench light --balls 300 --subsample 20 --reference-culled-max 0 --device opencl -q";
+  const std::string beyond = " --far-field-table-mb " + std::to_string(int(buffer_mb) + 1) + " -o " + json.string();
+
+  const auto refused = run_on_small_pocl(synthetic + beyond);
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  const std::string words = "--far-field-table-mb: a far-field table of up to " + std::to_string(int(buffer_mb) + 1) +
+                            " MB takes two buffers";
+  EXPECT_NE(refused.output.find(words), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(json)) << "no JSON for a cap the device cannot hold";
+
+  const auto stand = run_on_small_pocl("bench light --stand " + tiny_bench_stand.string() + " --device opencl -q" +
+                                       beyond);
+  EXPECT_EQ(stand.status, 2) << stand.output;
+  EXPECT_NE(stand.output.find(words), std::string::npos) << "the flag gave the cap, not the scenario: " << stand.output;
+  EXPECT_EQ(stand.output.find("key 'light.far_field_table_mb'"), std::string::npos) << stand.output;
+  EXPECT_FALSE(fs::exists(json));
+
+  std::smatch advice;
+  ASSERT_TRUE(std::regex_search(refused.output, advice, std::regex("lower it to ([0-9]+) or less"))) << refused.output;
+  const auto lit = run_on_small_pocl(synthetic + " --far-field-table-mb " + advice[1].str() + " -o " + json.string());
+  ASSERT_EQ(lit.status, 0) << lit.output;
+  const std::string written = read_text(json);
+  EXPECT_NE(written.find("\"far_field_table_mb\": " + advice[1].str() + ".0"), std::string::npos) << written;
 }
 
 }  // namespace
