@@ -69,10 +69,11 @@ std::string check_light_device(const std::string& text) {
   }
 }
 
-// Where `backend`'s device cannot hold the far field at p's cap, a usage error naming `flag`, which gave the cap
-// (light/far_field_buffers.hpp): the same words as a scenario's refusal, under the flag instead of a key.
-void refuse_flag_beyond_device(LightParameters p, const compute::ComputeBackend& backend, const CLI::Option& flag) {
-  p.exact = false;  // the benchmark's culled solver's (light_benchmark.cpp)
+// Where `backend`'s device cannot hold the far field at the culled parameters p's cap, a usage error naming `flag`,
+// which gave the cap (light/far_field_buffers.hpp): the same words as a scenario's refusal, under the flag instead of a
+// key.
+void refuse_flag_beyond_device(const LightParameters& p, const compute::ComputeBackend& backend,
+                               const CLI::Option& flag) {
   const auto memory = backend.memory();
   if (!memory) return;
   if (auto reason = far_field_beyond_device(p, *memory, backend.name()))
@@ -92,15 +93,15 @@ void open_light_device(const LightBenchmarkOptions& options, const std::vector<L
     throw std::runtime_error("device '" + text + "': this build of heliostand has no OpenCL backend; --device none "
                              "runs the reference solvers alone");
   const auto backend = compute::ComputeBackend::open(choice);
+  // options.parameters are the culled solver's already (light_benchmark.hpp)
   if (!options.ball_counts.empty()) refuse_flag_beyond_device(options.parameters, backend, table_flag);
   for (const auto& stand : stands) {
-    if (table_flag.count() > 0) {
-      refuse_flag_beyond_device(stand.parameters, backend, table_flag);
-      continue;
-    }
     LightParameters culled = stand.parameters;  // the benchmark's culled solver's (light_benchmark.cpp)
     culled.exact = false;
-    refuse_far_field_beyond_device(culled, backend, stand.name);
+    if (table_flag.count() > 0)
+      refuse_flag_beyond_device(culled, backend, table_flag);
+    else
+      refuse_far_field_beyond_device(culled, backend, stand.name);
   }
 }
 
