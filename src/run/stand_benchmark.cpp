@@ -72,17 +72,11 @@ nlohmann::ordered_json by_year(const std::vector<YearCost>& years) {
   return list;
 }
 
-// The operating system's part in the run, by the process's own account (getrusage): its CPU seconds in the system
-// (every thread's) and the pages it touched for the first time (minor faults, each a page the system had to find and
-// clear: what a first solve's fresh tables cost, docs/performance.md "What a first touch costs here, measured
-// apart"). null where the account cannot be read.
+// The operating system's part in the run (system_part_so_far); null where the account cannot be read.
 void add_system_part(nlohmann::ordered_json& json) {
-  rusage usage{};
-  const bool known = ::getrusage(RUSAGE_SELF, &usage) == 0;
-  json["system_cpu_seconds"] = known ? nlohmann::ordered_json(static_cast<double>(usage.ru_stime.tv_sec) +
-                                                              static_cast<double>(usage.ru_stime.tv_usec) * 1e-6)
-                                     : nlohmann::ordered_json(nullptr);
-  json["minor_page_faults"] = known ? nlohmann::ordered_json(usage.ru_minflt) : nlohmann::ordered_json(nullptr);
+  const auto part = system_part_so_far();
+  json["system_cpu_seconds"] = part ? nlohmann::ordered_json(part->cpu_seconds) : nlohmann::ordered_json(nullptr);
+  json["minor_page_faults"] = part ? nlohmann::ordered_json(part->minor_page_faults) : nlohmann::ordered_json(nullptr);
 }
 
 nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary& run, std::size_t heap_at_end) {
@@ -129,6 +123,13 @@ std::size_t peak_resident_bytes() {
   rusage usage{};
   if (::getrusage(RUSAGE_SELF, &usage) != 0) return 0;
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+std::optional<SystemPart> system_part_so_far() {
+  rusage usage{};
+  if (::getrusage(RUSAGE_SELF, &usage) != 0) return std::nullopt;
+  return SystemPart{static_cast<double>(usage.ru_stime.tv_sec) + static_cast<double>(usage.ru_stime.tv_usec) * 1e-6,
+                    usage.ru_minflt};
 }
 
 Scenario stand_benchmark_scenario(const StandBenchmarkOptions& options) {

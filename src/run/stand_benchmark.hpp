@@ -34,4 +34,17 @@ std::string run_stand_benchmark(const Scenario& scenario, const StandBenchmarkOp
 // The process's peak resident set so far (getrusage ru_maxrss), bytes.
 std::size_t peak_resident_bytes();
 
+// The operating system's part in the process so far, by its own account (getrusage, RUSAGE_SELF): its CPU seconds in
+// the system (every thread's) and the pages it touched for the first time (minor faults, each a page the system had to
+// find and clear: what a first solve's fresh tables cost, docs/performance.md "What a first touch costs here, measured
+// apart"). The kernel splits the process's CPU time between user and system by where its clock ticks found it, so a
+// run of under a second with a few tens of ms in the system may be told 0 s of it.
+struct SystemPart {
+  double cpu_seconds = 0;
+  long minor_page_faults = 0;
+};
+
+// std::nullopt where the account cannot be read.
+std::optional<SystemPart> system_part_so_far();
+
 }  // namespace heliostand

@@ -94,9 +94,12 @@ TEST(BenchStandCli, ReportsTheRunAsJson) {
   EXPECT_GT(peak, 1 << 20);
   EXPECT_DOUBLE_EQ(json.at("peak_memory_mib").get<double>(), peak / (1 << 20));
   // The operating system's part: every resident page came in by a fault, and one fault brings in at most 2 MiB (a
-  // huge page), so the faults are at least the peak over 2 MiB; the system's CPU is some, less than the process's.
+  // huge page), so the faults are at least the peak over 2 MiB; the system's CPU is a number, less than the process's.
+  // The kernel tells the system's CPU by where its ticks find the process, so this sub-second run's few tens of ms
+  // there may be told 0 s (it was, once, in CI on 2026-12-03): that it shows the system's work is
+  // SystemPart.ClearingFreshPagesShowsInTheSystemsCpuAndTheFaults's, on a gibibyte of fresh pages.
   EXPECT_GE(json.at("minor_page_faults").get<double>(), peak / (2 << 20));
-  EXPECT_GT(json.at("system_cpu_seconds").get<double>(), 0.0);
+  EXPECT_GE(json.at("system_cpu_seconds").get<double>(), 0.0);
   double cpu = 0;
   for (const auto& [stage, seconds] : json.at("stage_cpu_seconds").items()) cpu += seconds.get<double>();
   EXPECT_LT(json.at("system_cpu_seconds").get<double>(), cpu + 1.0);
