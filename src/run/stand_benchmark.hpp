@@ -3,7 +3,7 @@
 // the VTK series is not) and reports what the run cost as JSON: seconds per stage of the simulated year (the
 // clock of run.json), total seconds, tree-years per second, what the living trees hold at the end (leaf balls,
 // shoots, root segments), the heap in use after the last year (what the stand costs to hold) and the process's
-// peak resident memory. docs/performance.md "Whole stand".
+// peak resident memory. Its fields: validation/bench/README.md; its uses: docs/performance.md "Measuring again".
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -1,4 +1,4 @@
-// The structure that keeps the roots stage linear in segments (docs/performance.md, "Roots stage"): the year's
+// The structure that keeps the roots stage linear in segments (docs/performance.md, "The roots stage now"): the year's
 // field looks at the trees' own segment lists instead of a copy, is begun once a year, and is queried a chunk of
 // buds at a time without the answer depending on the chunk size. No timing here: only what is built, how often,
 // and that the result is the same.
