@@ -82,7 +82,7 @@ struct SpeciesParameters {
   // 35-year Todomatsu carries ~400 balls instead of ~5000 (the stand light solve is O(balls)).
   int foliage_max_order = 1;
 
-  // Light response (seed 000 on the seed-001 architecture; docs/model.md "Seed 000 in the conifer stand").
+  // Light response (seed 000 on the seed-001 architecture; docs/model.md "Conifer stand").
   // Every new branch shoot turns toward its light vector by the fraction I and dies with its axis when its
   // light is below its own threshold D = D0 + dither * U(-1, 1). Conifer defaults are calibrated for the stand's
   // dense foliage (docs/model.md); seed 000's Table 1 values (D0 = 0.6, dither 0.3) would kill every shoot.

@@ -24,10 +24,10 @@ struct LightParameters {
   double intensity_ratio = 1.5;  // L = C1 / C2 (Table 1: 3/2); C1 = 1 for the sky, C2 = 1/L for ground reflection
   double sky_scale = 1.0;        // multiplies C1 and C2 (seed 003's "sky light x0.5 / x0.7" experiments)
   double transmittance = 0.5;    // t: factor per occluding ball on a patch (seed gives none; docs/model.md)
-  // The sky's radiance (docs/light.md "Skies"). Seed 000's two-level sky: C1 over the whole upper hemisphere,
-  // C2 = C1 / L from below (40 % of the light from below the horizon). A stand sees the standard overcast sky
-  // (Moon & Spencer 1942; CIE standard overcast): radiance C1 (1 + 2 cos θ) / 3 at zenith angle θ, and from
-  // below the light reflected by a ground of albedo ρ (a Lambertian floor under that sky: radiance ρ · 7/9 · C1).
+  // The sky's radiance (docs/light.md "The stands' sky"). Seed 000's two-level sky: C1 over the whole upper
+  // hemisphere, C2 = C1 / L from below (40 % of the light from below the horizon). A stand sees the standard overcast
+  // sky (Moon & Spencer 1942; CIE standard overcast): radiance C1 (1 + 2 cos θ) / 3 at zenith angle θ, and from below
+  // the light reflected by a ground of albedo ρ (a Lambertian floor under that sky: radiance ρ · 7/9 · C1).
   enum class Sky { kanamaru, standard_overcast };
   Sky sky = Sky::kanamaru;
   double ground_albedo = 0.15;   // forest floor under conifers, 0.1-0.2 (docs/light.md)

@@ -1,5 +1,5 @@
 #pragma once
-// Soil vertex values from a CSV file (docs/roots.md, "Soil file"):
+// Soil vertex values from a CSV file (docs/roots.md, "Soil"):
 //
 //   # comments and blank lines are ignored
 //   i,j,k,moisture,nutrient
