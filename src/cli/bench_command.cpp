@@ -43,7 +43,7 @@ void print_json(const std::string& json, const std::string& output) {
 void check_output_writable(const std::string& output) {
   if (output.empty()) return;
   AtomicFile probe(output);
-  probe.write("");
+  probe.try_writing();
 }  // the probe's temporary is removed here: it was never committed
 
 std::string check_device(const std::string& text) {

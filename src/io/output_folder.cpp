@@ -6,6 +6,8 @@
 #include <fstream>
 #include <system_error>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 namespace heliostand {
@@ -23,16 +25,39 @@ OutputFolderError cannot_write(const fs::path& final_path, int reason) {
                                        reason != 0 ? std::strerror(reason) : "the write stopped short"));
 }
 
-AtomicFile::AtomicFile(fs::path final_path)
-    : final_(std::move(final_path)), temporary_(temporary_sibling(final_)) {}
+namespace {
+
+bool is_special_file(fs::file_status status) {
+  return fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+// The file that a rename into place should replace: the one a symbolic link names (the link kept), else the name.
+fs::path file_to_replace(const fs::path& final_path) {
+  std::error_code error;
+  if (!fs::is_symlink(fs::symlink_status(final_path, error))) return final_path;
+  fs::path target = fs::canonical(final_path, error);
+  return error ? final_path : target;  // a dangling link is replaced itself
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(fs::path final_path) : final_(std::move(final_path)) {
+  std::error_code error;
+  if (is_special_file(fs::status(final_, error))) return;  // written in place: no destination to rename over
+  destination_ = file_to_replace(final_);
+  temporary_ = temporary_sibling(destination_);
+}
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
-    : final_(std::move(other.final_)), temporary_(std::move(other.temporary_)), committed_(other.committed_) {
+    : final_(std::move(other.final_)),
+      destination_(std::move(other.destination_)),
+      temporary_(std::move(other.temporary_)),
+      committed_(other.committed_) {
   other.committed_ = true;  // the moved-from object owns no temporary any more
 }
 
 AtomicFile::~AtomicFile() {
-  if (committed_) return;
+  if (committed_ || written_in_place()) return;
   std::error_code ignored;  // best effort while unwinding: never throw from a destructor
   fs::remove_all(temporary_, ignored);
 }
@@ -52,16 +77,21 @@ void AtomicFile::write(std::string_view contents) const {
   std::error_code ignored;
   if (fs::is_directory(final_, ignored))
     throw OutputFolderError(fmt::format("cannot write {}: it is a folder, not a file", final_.string()));
-  write_whole_file(temporary_, contents, final_);
+  write_whole_file(written_in_place() ? final_ : temporary_, contents, final_);
+}
+
+void AtomicFile::try_writing() const {
+  if (!written_in_place()) return write("");
+  if (::access(final_.c_str(), W_OK) != 0) throw cannot_write(final_, errno);
 }
 
 void AtomicFile::commit() {
   if (committed_) return;
   std::error_code error;
-  fs::rename(temporary_, final_, error);
+  if (!written_in_place()) fs::rename(temporary_, destination_, error);
   if (error) {
     throw OutputFolderError(
-        fmt::format("cannot rename {} to {}: {}", temporary_.string(), final_.string(), error.message()));
+        fmt::format("cannot rename {} to {}: {}", temporary_.string(), destination_.string(), error.message()));
   }
   committed_ = true;
 }

@@ -40,6 +40,10 @@ void empty_folder(const std::filesystem::path& folder);
 
 // A file under its temporary name until commit() renames it into place. If never committed (an
 // exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
+// A name the user gave may be a symbolic link, or a file that is not a regular one (/dev/null, a FIFO): a link is
+// followed, so that the file it names is replaced and the link kept, as `>` in a shell would; a device or a FIFO is
+// written in place, since a rename would replace the node itself (which root may do: `-o /dev/null` once turned
+// /dev/null into a JSON file).
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path final_path);
@@ -49,19 +53,25 @@ class AtomicFile {
   AtomicFile(AtomicFile&& other) noexcept;
   AtomicFile& operator=(AtomicFile&&) = delete;
 
-  const std::filesystem::path& temporary_path() const { return temporary_; }
+  const std::filesystem::path& temporary_path() const { return temporary_; }  // empty where written in place
   const std::filesystem::path& final_path() const { return final_; }
   bool committed() const { return committed_; }
+  bool written_in_place() const { return temporary_.empty(); }
 
   // Writes `contents` as the whole temporary file. If it cannot be written, throws OutputFolderError
   // "cannot write FINAL_PATH: REASON", naming the file the user asked for (not its temporary) and the system's
   // reason, or that the write stopped short where the system gave none; "cannot write FINAL_PATH: it is a folder, not
   // a file" when a folder stands where the file belongs (before anything is written).
   void write(std::string_view contents) const;
-  void commit();   // rename temporary → final (replacing an older final file)
+  // Tries the file before the work that will fill it, with write()'s errors: its temporary is written empty (and
+  // removed with this object); a file written in place is only asked whether it may be written, since opening a FIFO
+  // waits for its reader and closing it would end the reader's input before the contents came.
+  void try_writing() const;
+  void commit();   // rename temporary → final (replacing an older final file); nothing to do where written in place
 
  private:
-  std::filesystem::path final_;
+  std::filesystem::path final_;        // the name the user knows, in every message
+  std::filesystem::path destination_;  // the file replaced: final_, or the file a link at final_ names
   std::filesystem::path temporary_;
   bool committed_ = false;
 };

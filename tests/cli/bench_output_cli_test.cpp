@@ -2,7 +2,14 @@
 // be written is an error that names it, with a non-zero exit, and then nothing is reported: no JSON on stdout (which
 // a script would take for a result) and no file, whole or half-written. The file is tried before the benchmark runs,
 // so that a long run's JSON is not lost to a mistyped folder.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "cli/cli_runner.hpp"
 
@@ -88,6 +95,28 @@ TEST(BenchOutputCli, QuietLeavesOnlyTheJson) {
   ASSERT_EQ(quiet.status, 0) << quiet.output;
   EXPECT_EQ(quiet.output.find("bench light:"), std::string::npos) << quiet.output;
   EXPECT_EQ(quiet.output.front(), '{') << "stdout holds the JSON alone: " << quiet.output;
+}
+
+// -o may name a file that is not a regular one (a FIFO, /dev/stdout, /dev/null): the JSON goes into it, and it stays
+// what it was. A rename into place replaced the node itself: run as root, `-o /dev/full` left a JSON file there.
+TEST(BenchOutputCli, AFifoGivenForTheFileGetsTheJsonAndStaysAFifo) {
+  const fs::path folder = scratch_folder("bench-output-fifo");
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path fifo = folder / "light.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // so that the benchmark's write need not wait
+  ASSERT_GE(reader, 0) << std::strerror(errno);
+  const CliResult written = run_cli(quiet_reference_bench + " -o " + fifo.string());
+  std::string json;
+  char bytes[4096];
+  for (ssize_t read = 0; (read = ::read(reader, bytes, sizeof bytes)) > 0;) json.append(bytes, bytes + read);
+  ::close(reader);
+  ASSERT_EQ(written.status, 0) << written.output;
+  EXPECT_NE(json.find("\"benchmark\": \"light\""), std::string::npos) << json;
+  EXPECT_NE(written.output.find(json), std::string::npos) << "stdout carries the same JSON";
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1) << "nothing beside it";
 }
 
 }  // namespace heliostand::testing

@@ -2,9 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
+#include <future>
 #include <sstream>
 
 #include "io/file_size_limit.hpp"
@@ -153,6 +159,61 @@ TEST(AtomicFile, AFolderWhereTheFileBelongsIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(file.temporary_path()));
   EXPECT_TRUE(fs::is_directory(target));
   EXPECT_TRUE(fs::is_empty(target));
+}
+
+// A symbolic link given for the file is followed: the file it names gets the new contents, and the link stays a link
+// (a rename onto the link's own name would replace the link and leave its file as it was).
+TEST(AtomicFile, ALinkIsFollowedAndKept) {
+  testing::TempFolder tmp("atomic_link");
+  const fs::path real = tmp.path() / "real.json";
+  const fs::path link = tmp.path() / "link.json";
+  std::ofstream(real) << "old";
+  fs::create_symlink(real.filename(), link);
+  AtomicFile file(link);
+  file.write("new");
+  file.commit();
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read_text(real), "new");
+  EXPECT_EQ(std::distance(fs::directory_iterator(tmp.path()), fs::directory_iterator()), 2) << "no temporary left";
+}
+
+// A file that is not a regular one is written in place: renaming over it would replace the node itself, which root
+// may do to /dev/null. A FIFO stands for every such file here (no test may touch /dev): its reader is opened first,
+// without waiting, so that the write does not wait either and the bytes can be read back.
+TEST(AtomicFile, AFifoIsWrittenInPlaceAndStaysAFifo) {
+  testing::TempFolder tmp("atomic_fifo");
+  const fs::path fifo = tmp.path() / "light.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0) << std::strerror(errno);
+  AtomicFile file(fifo);
+  EXPECT_TRUE(file.written_in_place());
+  file.write("{}\n");
+  file.commit();
+  char bytes[16] = {};
+  const ssize_t read = ::read(reader, bytes, sizeof bytes);
+  ::close(reader);
+  EXPECT_EQ(std::string(bytes, read > 0 ? static_cast<std::size_t>(read) : 0), "{}\n");
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  EXPECT_EQ(std::distance(fs::directory_iterator(tmp.path()), fs::directory_iterator()), 1) << "no temporary left";
+}
+
+// Trying a FIFO before the work must not open it: the open would wait for a reader, and the close end the reader's
+// input before the contents came. Should it open it after all, the test lets it go by opening the reader itself.
+TEST(AtomicFile, TryingAFifoDoesNotOpenIt) {
+  testing::TempFolder tmp("atomic_fifo_try");
+  const fs::path fifo = tmp.path() / "stand.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  const AtomicFile file(fifo);
+  auto tried = std::async(std::launch::async, [&file] { file.try_writing(); });
+  if (tried.wait_for(std::chrono::seconds(10)) != std::future_status::ready) {
+    const int reader = ::open(fifo.c_str(), O_RDONLY);  // the waiting writer's open returns now
+    tried.wait();
+    ::close(reader);
+    FAIL() << "try_writing() opened the FIFO and waited for a reader";
+  }
+  tried.get();  // rethrows what it threw
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
 }
 
 }  // namespace
