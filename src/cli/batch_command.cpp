@@ -2,6 +2,7 @@
 #include "batch/batch.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/path_checks.hpp"
 
 namespace heliostand::cli {
 
@@ -14,7 +15,7 @@ void add_batch_command(CLI::App& app, int& status) {
   auto out = std::make_shared<std::string>();
   auto device = std::make_shared<std::string>();
   command->add_option("manifest", *manifest, "Batch manifest TOML")->required();
-  command->add_option("-o,--out", *out, "Output root (overrides the manifest's `out`)");
+  command->add_option("-o,--out", *out, "Output root (overrides the manifest's `out`)")->check(path_check("folder"));
   command->add_option("-j,--jobs", options->jobs, "Runs at once (per MPI rank); default: the cores, 1 under MPI")
       ->check(whole_number_check());
   command->add_flag("-f,--force", options->force, "Delete an earlier batch in the output root and start over");

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/path_checks.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/compute_backend.hpp"
 #include "compute/device_choice.hpp"
@@ -118,9 +119,10 @@ void add_bench_stand_command(CLI::App& bench) {
       ->check(check_device);
   stand->add_option("--tables", options->tables_folder,
                     "Keep the run's tables (stand_table.csv, trees.csv, events.csv, run.json) in this folder "
-                    "(default: a temporary folder, removed)");
+                    "(default: a temporary folder, removed)")
+      ->check(path_check("folder"));
   stand->add_flag("-f,--force", options->force, "Replace the contents of a non-empty --tables folder");
-  stand->add_option("-o,--output", *output, "Also write the JSON to this file");
+  stand->add_option("-o,--output", *output, "Also write the JSON to this file")->check(path_check("file"));
   stand->callback([options, output] {
     options->command_line = invoked_command_line();
     // The input first (as `grow`), then the -o file, then the run: each mistake is found before any growth.
@@ -259,7 +261,7 @@ void add_bench_light_command(CLI::App& bench) {
                     "first is the row's, the later ones are listed after it: they reuse the buffers it keeps)")
       ->check(whole_number_check(1, 1000))
       ->capture_default_str();
-  light->add_option("-o,--output", *output, "Also write the JSON to this file");
+  light->add_option("-o,--output", *output, "Also write the JSON to this file")->check(path_check("file"));
   light->callback([options, scenarios, output, overrides, balls, evaluations] {
     // Later evaluations are of the OpenCL solver: without it there is nothing to repeat, and a flag that silently
     // did nothing would leave a user reading one evaluation as several.

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/path_checks.hpp"
 #include "cli/seed_option.hpp"
 #include "compute/device_choice.hpp"
 #include "run/simulation.hpp"
@@ -60,7 +61,7 @@ void add_grow_command(CLI::App& app, int& status) {
   auto* command = app.add_subcommand("grow", "Grow a surveyed stand and write VTK and CSV outputs");
   auto arguments = std::make_shared<GrowArguments>();
   command->add_option("scenario", arguments->scenario, "Scenario TOML file")->required();
-  command->add_option("-o,--out", arguments->out, "Output folder")->required();
+  command->add_option("-o,--out", arguments->out, "Output folder")->required()->check(path_check("folder"));
   command->add_flag("-f,--force", arguments->force, "Replace the contents of a non-empty output folder");
   command->add_option("--seed", arguments->seed, "Random seed (overrides run.seed)")->check(seed_check());
   command->add_option("--years", arguments->years, "Years to simulate (overrides run.years)")

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/path_checks.hpp"
 #include "experiments/kanamaru/kanamaru_scenario.hpp"
 
 namespace heliostand::cli {
@@ -14,7 +15,7 @@ void add_kanamaru_command(CLI::App& app, int& status) {
   auto out = std::make_shared<std::string>();
   command->add_option("scenario", *scenario, "Scenario TOML file with a [model] table")->required();
   auto force = std::make_shared<bool>(false);
-  command->add_option("-o,--out", *out, "Output folder (new or empty)")->required();
+  command->add_option("-o,--out", *out, "Output folder (new or empty)")->required()->check(path_check("folder"));
   command->add_flag("--force", *force, "Replace an earlier heliostand output in the folder");
   command->callback([scenario, out, force, &status] {
     status = report_errors([&] {

@@ -17,6 +17,7 @@
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
+#include "cli/path_checks.hpp"
 
 extern char** environ;
 
@@ -86,7 +87,8 @@ void add_report_command(CLI::App& app, int& status) {
       "report", "PNG charts and a one-page report.md of a run, or of several runs compared on the same axes");
   auto arguments = std::make_shared<ReportArguments>();
   command->add_option("run_dirs", arguments->run_dirs, "Run folder(s) written by `heliostand grow`")->required();
-  command->add_option("-o,--out", arguments->out, "Report folder (default RUN_DIR/report; required with several runs)");
+  command->add_option("-o,--out", arguments->out, "Report folder (default RUN_DIR/report; required with several runs)")
+      ->check(path_check("folder"));
   // One value per --label, so that `--label thinned RUN_B` does not swallow the next run folder.
   command->add_option("--label", arguments->labels, "Legend name of a run: once per run, in the order of the folders")
       ->allow_extra_args(false);
