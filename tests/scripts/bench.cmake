@@ -46,8 +46,21 @@ add_test(NAME bench.scaling_reports_a_failed_run
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
                  ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
                  --device bogus --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
+# An --out that names a file, or no folder at all (`--out=`, a script's unset variable: the current folder before),
+# is refused before any stand is grown; before, a file ended in a Python traceback.
+add_test(NAME bench.scaling_refuses_a_file_for_its_folder
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --out: [^ ]*scaling.py exists and is not a folder"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 --stand ${BENCH_DIR}/stands/tiny.toml --out ${BENCH_DIR}/scaling.py)
+add_test(NAME bench.scaling_refuses_an_empty_folder_name
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --out: a folder name is expected, got an empty one"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 --stand ${BENCH_DIR}/stands/tiny.toml --out=)
 set_tests_properties(bench.scaling_refuses_a_missing_program bench.scaling_refuses_zero_years
-                     bench.scaling_reports_a_failed_run PROPERTIES LABELS "bench" TIMEOUT 60)
+                     bench.scaling_reports_a_failed_run bench.scaling_refuses_a_file_for_its_folder
+                     bench.scaling_refuses_an_empty_folder_name PROPERTIES LABELS "bench" TIMEOUT 60)
 # The same binary given twice (to see the machine's noise): each of its two tables has the tiny stand's one row
 # ("| 8 | 8 |"), and the ratio table one ("| 8 | " then a ratio); runs filed by path instead of position put both
 # runs in each table. The machine line names the CPU family and model from the runs' JSON (lscpu's model name alone

@@ -46,6 +46,16 @@ def scenario_file(text):
     return path
 
 
+def output_folder(text):
+    """--out: a folder to write into, not an empty name (that would be the current folder) nor an existing file."""
+    if not text:
+        raise argparse.ArgumentTypeError("a folder name is expected, got an empty one")
+    path = Path(text)
+    if path.exists() and not path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text} exists and is not a folder")
+    return path
+
+
 def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--heliostand", action="append", type=program,
@@ -54,7 +64,8 @@ def parse_arguments():
     parser.add_argument("--device", help="passed to bench stand (default: the scenarios' device, auto)")
     parser.add_argument("--stand", action="append", type=scenario_file,
                         help="scenario to run instead of the four planted stands (repeatable)")
-    parser.add_argument("--out", type=Path, default=Path("out/bench"), help="folder for the JSON and scaling.md")
+    parser.add_argument("--out", type=output_folder, default=Path("out/bench"),
+                        help="folder for the JSON and scaling.md")
     arguments = parser.parse_args()
     if not arguments.heliostand:
         try:
@@ -63,6 +74,10 @@ def parse_arguments():
             parser.error(f"argument --heliostand: {error} (the default; build first, or name one)")
     if len(arguments.heliostand) > 2:
         parser.error("at most two --heliostand binaries")
+    try:  # made now, so that a folder that cannot be made is found before the first stand's minutes
+        arguments.out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        parser.error(f"argument --out: cannot create {arguments.out}: {error.strerror}")
     return arguments
 
 
@@ -177,7 +192,6 @@ def main():
     arguments = parse_arguments()
     binaries = arguments.heliostand
     stands = arguments.stand or PLANTED
-    arguments.out.mkdir(parents=True, exist_ok=True)
     started = time.strftime("%Y-%m-%d %H:%M %Z")
     loads = [load_average()]
     # By position, not by path: the same binary given twice (to see the machine's noise) keeps two sets of runs.
