@@ -18,6 +18,14 @@ add_test(NAME bench.planted_surveys_are_generated
          COMMAND sh -c "rm -rf \"$0\" && \"$1\" \"$2/make_planted_stands.py\" \"$0\" && for f in planted_100 planted_400 planted_1600 planted_2500 old_100; do cmp \"$0/$f.csv\" \"$2/stands/$f.csv\" || exit 1; done"
                  ${PROJECT_BINARY_DIR}/test-output/bench-surveys ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR})
 set_tests_properties(bench.planted_surveys_are_generated PROPERTIES LABELS "bench")
+# Its --help shows its usage (before, any first argument was taken for the folder: `--help` wrote one so named). The
+# option goes inside sh -c: given to cmake -P as an argument of its own, cmake takes it for its own --help.
+add_test(NAME bench.planted_surveys_script_shows_its_help
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 "-DEXPECT_OUTPUT=usage: make_planted_stands.py \\[-h\\] \\[folder\\]"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 sh -c "\"$0\" \"$1\" --help" ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/make_planted_stands.py)
+set_tests_properties(bench.planted_surveys_script_shows_its_help PROPERTIES LABELS "bench" TIMEOUT 60
+                     WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 
 # 8 trees, 1 year: the row reads "| 8 | 8 |" (trees, tree-years), then the leaf balls and root segments at the end,
 # the wall, light and roots seconds and the light's share.

@@ -8,9 +8,9 @@ Deterministic: one fixed seed, the same files every run.
 
     python3 validation/bench/make_planted_stands.py validation/bench/stands
 """
+import argparse
 import csv
 import random
-import sys
 from pathlib import Path
 
 SEED = 16          # issue 16; any fixed number keeps the files reproducible
@@ -72,7 +72,10 @@ def write_stand(path, rng, spacing, edge, sizes):
 
 
 def main():
-    folder = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).parent / "stands")
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("folder", nargs="?", type=Path, default=Path(__file__).parent / "stands",
+                        help="where the surveys are written (default: the stands folder beside this script)")
+    folder = parser.parse_args().folder  # (before: any first argument was the folder, `--help` one named so)
     folder.mkdir(parents=True, exist_ok=True)
     for trees, edge in PLOTS.items():
         write_stand(folder / f"planted_{trees}.csv", random.Random(SEED * 10_000 + trees), SPACING, edge, YOUNG)
