@@ -42,8 +42,8 @@ void empty_folder(const std::filesystem::path& folder);
 // exception unwound past it), the temporary is deleted, so no stray temporaries are left behind.
 // A name the user gave may be a symbolic link, or a file that is not a regular one (/dev/null, a FIFO): a link is
 // followed, so that the file it names is replaced and the link kept, as `>` in a shell would; a device or a FIFO is
-// written in place, since a rename would replace the node itself (which root may do: `-o /dev/null` once turned
-// /dev/null into a JSON file).
+// written in place, since a rename would replace the node itself (which root may do: `-o /dev/full` once turned
+// /dev/full into a JSON file).
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path final_path);
