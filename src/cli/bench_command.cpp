@@ -27,8 +27,9 @@
 namespace heliostand::cli {
 namespace {
 
-// The file first, under a temporary name renamed into place, then stdout: a file that cannot be written leaves
-// neither a half-written file nor a report on stdout that the exit status calls failed.
+// The file first, under a temporary name renamed into place (a FIFO or a device written in place: AtomicFile), then
+// stdout: a file that cannot be written leaves neither a half-written file nor a report on stdout that the exit
+// status calls failed.
 void print_json(const std::string& json, const std::string& output) {
   if (!output.empty()) {
     AtomicFile file(output);
@@ -39,8 +40,9 @@ void print_json(const std::string& json, const std::string& output) {
 }
 
 // The -o file is tried before the benchmark runs, so that a mistyped folder is not found out after a ten-minute
-// hectare, its JSON then lost: its temporary is written empty and removed at once, with the same "cannot write FILE:
-// REASON" as at the end (a folder given for the file included). Nothing is left behind either way.
+// hectare, its JSON then lost: its temporary is written empty and removed at once (a FIFO or a device is only asked
+// whether it may be written: AtomicFile::try_writing), with the same "cannot write FILE: REASON" as at the end (a
+// folder given for the file included). Nothing is left behind either way.
 void check_output_writable(const std::string& output) {
   if (output.empty()) return;
   AtomicFile probe(output);
