@@ -1,7 +1,7 @@
 #pragma once
 // Coefficients of seed 003's crown–root balance (scenario table [coupling], docs/formats.md):
 //   LP_n = ρ Σ L_i,  WP_n = τ Σ W_j,  Branch_n = α_b (min(WP_n/LP_n, 2) − 1),  Root_n = α_r (min(LP_n/WP_n, 2) − 1)
-// The seed gives no values; ours are in docs/model.md ("Crown–root coupling").
+// The seed gives no values; ours are in docs/model.md ("Seed 003: crown–root coupling").
 namespace heliostand {
 
 struct CouplingParameters {

@@ -68,7 +68,8 @@ const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, st
 
 // Which cells of the far field's table by cell the culled kernels will read, one byte a cell (cl/far_field.cl,
 // far_field_mark_read): the corners around each receiver. A first 10^5 solve reads 43 % of the cells, a 10^6 one 58 %
-// (docs/performance.md "A first 10^5 far field in its parts"); only those are laid out.
+// (docs/performance.md "Candidate lists and the k-d tree from one year to the next, and a first 10⁵ far field in its
+// parts"); only those are laid out.
 const cl::Buffer& mark_cells_read(compute::OpenCLContext& device, cl::Kernel& k, const cl::Buffer& balls,
                                   std::span<const std::uint32_t> receivers, const cl_float4& origin,
                                   const cl_float4& cell, const cl_int4& dims, bool periodic, KeptBuffer& read_kept) {
