@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Every reference to a section of the docs names a section that exists.
+
+Code comments, docs and scripts point readers at the docs as `docs/light.md "The stands' sky"`: the file, then the
+section's name in quotes. When a section is renamed or removed such a reference leads nowhere, and nothing else
+notices (the twenty-fourth session found seven by hand). This check reads every file of the checkout that git tracks
+or would track, finds each `docs/NAME.md "Title"` (also `docs/NAME.md, "Title"` and `docs/NAME.md ("Title")`; inside
+docs/ also `NAME.md "Title"`), joins a title broken across comment lines or C++ string literals, and looks for it
+among NAME.md's headings and bold paragraph titles (`**Title.**` opening a paragraph or a list item): the whole
+title, or its start up to a word's end, as a reader finds a section by its first words. It prints each reference
+that names nothing, with its file and line, and exits 1 if there is one.
+
+    tests/docs/section_references.py [CHECKOUT]     (default: the checkout holding this script)
+"""
+import argparse
+import pathlib
+import re
+import subprocess
+import sys
+
+# A reference: the doc's name, then a title in straight or curly double quotes. Inside docs/ a reference may drop
+# the folder or come as a Markdown link, [light.md](light.md) "Title".
+REFERENCE = re.compile(r'(?:docs/|(?<![\w/.-]))([a-z][a-z_-]*)\.md'  # docs/light.md, or light.md inside docs/
+                       r'(?:\]\([a-z_-]+\.md\))?`?,?'                # a Markdown link's target, a code mark, a comma
+                       r'\s*(?:(?://+|#+|\*|>)[ \t]*)?'              # a line break in a comment
+                       r'\(?["\u201c]')                              # the title's opening quote
+HEADING = re.compile(r'^#{1,6}\s+(.+?)\s*#*\s*$')
+BOLD_TITLE = re.compile(r'^\s*(?:[-*]\s+|\d+\.\s+)?\*\*(.+?)\*\*')
+# What opens a continuation line of a comment or a quoted block: it is dropped when a title is joined across lines.
+LINE_OPENER = re.compile(r'^\s*(?://+|#+|\*|>|;+|--)?\s?')
+
+
+def normalise(title):
+    """Compares titles as a reader would: spacing, a closing full stop or colon and Markdown's code marks aside."""
+    title = title.replace('`', '').replace('\u2019', "'")
+    title = re.sub(r'\s+', ' ', title).strip()
+    return title.rstrip('.:').strip()
+
+
+def sections_of(doc):
+    """NAME.md's section titles: its headings, without a leading section number ("3. "), and bold paragraph titles."""
+    titles = []
+    fenced = False
+    for line in doc.read_text(encoding='utf-8').splitlines():
+        if line.lstrip().startswith('```'):
+            fenced = not fenced
+            continue
+        if fenced:
+            continue
+        for pattern in (HEADING, BOLD_TITLE):
+            match = pattern.match(line)
+            if match:
+                titles.append(normalise(re.sub(r'^\d+(\.\d+)*\.\s+', '', match.group(1))))
+    return titles
+
+
+def names_a_section(title, titles):
+    """A reference names a section by its title or by the title's start up to a word's end: "Thinning" finds
+    "3. Thinning", "Seed 001" finds "Seed 001: conifer architecture", "The 3 m cut-off by default" finds
+    "The 3 m cut-off by default (2026-11-24)"."""
+    title = normalise(title)
+    if not title:
+        return False
+    return any(t == title or (t.startswith(title) and not t[len(title)].isalnum()) for t in titles)
+
+
+def tracked_files(root):
+    try:
+        listed = subprocess.run(['git', '-C', str(root), 'ls-files', '-z', '--cached', '--others',
+                                 '--exclude-standard'], check=True, capture_output=True).stdout
+        return [root / name for name in listed.decode().split('\0') if name]
+    except (OSError, subprocess.CalledProcessError):
+        # Not a checkout (a source archive): every file under the project's own folders.
+        folders = ['src', 'cl', 'tests', 'validation', 'docs', 'stands', '.ci']
+        files = [root / 'README.md', root / 'CMakeLists.txt']
+        for folder in folders:
+            files += [p for p in (root / folder).rglob('*') if p.is_file()]
+        return [p for p in files if p.exists()]
+
+
+def as_one_literal(text):
+    """C++ text with adjacent string literals joined and their escaped quotes plain, the line breaks kept: a message
+    that cites `docs/performance.md \\"Memory\\"` across two literals reads as the reference it prints."""
+    text = re.sub(r'"[ \t]*\n\s*"', lambda m: '\n' * m.group(0).count('\n'), text)
+    return text.replace('\\"', '"')
+
+
+def quoted_title(text, start):
+    """The title opening at text[start] (just past its opening quote), joined across line breaks; None if unclosed."""
+    pieces = []
+    position = start
+    for _ in range(4):  # a title spans at most a few comment lines
+        end_of_line = text.find('\n', position)
+        if end_of_line < 0:
+            end_of_line = len(text)
+        line = text[position:end_of_line]
+        close = re.search(r'["\u201d]', line)
+        if close:
+            pieces.append(line[:close.start()])
+            return ' '.join(pieces)
+        pieces.append(line)
+        if end_of_line == len(text):
+            return None
+        next_line = text[end_of_line + 1:]
+        position = end_of_line + 1 + LINE_OPENER.match(next_line).end()
+    return None
+
+
+def references_in(path, root):
+    try:
+        text = path.read_text(encoding='utf-8')
+    except (UnicodeDecodeError, OSError):
+        return  # a binary file (an image, a compressed table)
+    in_docs = path.parent == root / 'docs'
+    if path.suffix in ('.cpp', '.hpp', '.cl', '.h'):
+        text = as_one_literal(text)
+    for match in REFERENCE.finditer(text):
+        if not match.group(0).startswith('docs/') and not in_docs:
+            continue
+        title = quoted_title(text, match.end())
+        if title is None:
+            continue
+        line = text.count('\n', 0, match.start()) + 1
+        yield match.group(1), title, line
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument('checkout', nargs='?', type=pathlib.Path,
+                        default=pathlib.Path(__file__).resolve().parents[2],
+                        help='the checkout whose files and docs are read (default: the one holding this script)')
+    root = parser.parse_args().checkout.resolve()
+    if not (root / 'docs').is_dir():
+        parser.error(f'{root}: no docs/ folder there')
+    sections = {}
+    checked = 0
+    broken = []
+    for path in tracked_files(root):
+        if path == pathlib.Path(__file__).resolve() or not path.is_file():
+            continue
+        for name, title, line in references_in(path, root):
+            doc = root / 'docs' / f'{name}.md'
+            if not doc.is_file():
+                continue  # README.md, CHANGELOG.md of other projects: not a doc of ours
+            if name not in sections:
+                sections[name] = sections_of(doc)
+            checked += 1
+            if not names_a_section(title, sections[name]):
+                broken.append(f'{path.relative_to(root)}:{line}: docs/{name}.md has no section "{normalise(title)}"')
+    for message in broken:
+        print(message)
+    print(f'{checked} references to sections of docs/ read, {len(broken)} naming none')
+    return 1 if broken else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,27 @@
+# Every `docs/NAME.md "Section"` in the checkout names a section NAME.md has (tests/docs/section_references.py): a
+# renamed or removed section would otherwise leave code comments and docs pointing at nothing. The second test runs
+# the check on a small fixture whose broken references are known, so that a check that found nothing would fail.
+find_program(HELIOSTAND_DOCS_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT HELIOSTAND_DOCS_PYTHON)
+  find_program(HELIOSTAND_DOCS_PYTHON NAMES python3)
+endif()
+set(DOCS_CHECK ${PROJECT_SOURCE_DIR}/tests/docs/section_references.py)
+
+add_test(NAME docs.section_references_name_sections
+         COMMAND ${HELIOSTAND_DOCS_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR})
+set_tests_properties(docs.section_references_name_sections PROPERTIES LABELS "docs" TIMEOUT 60)
+
+# The fixture's five broken references, in file and line order, and its eight good ones not reported.
+set(DOCS_FIXTURE_REPORT
+    "docs/guide.md:15: docs/guide.md has no section \"Not a heading\"\n"
+    "src/tree.cpp:4: docs/guide.md has no section \"Thinning from above\"\n"
+    "src/tree.cpp:4: docs/guide.md has no section \"Planting rows\"\n"
+    "src/tree.cpp:4: docs/guide.md has no section \"Thin\"\n"
+    "src/tree.cpp:6: docs/guide.md has no section \"Roots\"\n"
+    "13 references to sections of docs/ read, 5 naming none")
+string(CONCAT DOCS_FIXTURE_REPORT ${DOCS_FIXTURE_REPORT})
+add_test(NAME docs.section_references_check_reports_the_broken_ones
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=^${DOCS_FIXTURE_REPORT}\n*$"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_DOCS_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
+set_tests_properties(docs.section_references_check_reports_the_broken_ones PROPERTIES LABELS "docs" TIMEOUT 60)
