@@ -8,7 +8,7 @@ or would track, finds each `docs/NAME.md "Title"` (also `docs/NAME.md, "Title"` 
 docs/ also `NAME.md "Title"`), joins a title broken across comment lines or C++ string literals, and looks for it
 among NAME.md's headings and bold paragraph titles (`**Title.**` opening a paragraph or a list item): the whole
 title, or its start up to a word's end, as a reader finds a section by its first words. It prints each reference
-that names nothing, with its file and line, and exits 1 if there is one.
+that names nothing (or a doc that does not exist), with its file and line, and exits 1 if there is one.
 
     tests/docs/section_references.py [CHECKOUT]     (default: the checkout holding this script)
 """
@@ -135,16 +135,20 @@ def main():
     sections = {}
     checked = 0
     broken = []
+    this_script = pathlib.Path(__file__).resolve()
+    # The fixture is a checkout of its own: its docs/, and references broken on purpose (tests/scripts/docs.cmake).
+    fixture = this_script.parent / 'fixture'
     for path in tracked_files(root):
-        if path == pathlib.Path(__file__).resolve() or not path.is_file():
+        if path == this_script or not path.is_file() or (fixture in path.parents and root != fixture):
             continue
         for name, title, line in references_in(path, root):
             doc = root / 'docs' / f'{name}.md'
+            checked += 1
             if not doc.is_file():
-                continue  # README.md, CHANGELOG.md of other projects: not a doc of ours
+                broken.append(f'{path.relative_to(root)}:{line}: docs/{name}.md: no such file')
+                continue
             if name not in sections:
                 sections[name] = sections_of(doc)
-            checked += 1
             if not names_a_section(title, sections[name]):
                 broken.append(f'{path.relative_to(root)}:{line}: docs/{name}.md has no section "{normalise(title)}"')
     for message in broken:
