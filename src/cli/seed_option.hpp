@@ -5,13 +5,14 @@
 
 #include <string>
 
+#include "cli/number_checks.hpp"
+
 namespace heliostand {
 
 inline CLI::Validator seed_check() {
   return CLI::Validator(
       [](std::string& value) -> std::string {
-        const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-        return digits ? std::string{} : "a seed is a whole number >= 0, got " + value;
+        return is_digits(value) ? std::string{} : "a seed is a whole number >= 0, got " + value;
       },
       "SEED >= 0");
 }
