@@ -4,11 +4,12 @@
 Code comments, docs and scripts point readers at the docs as `docs/light.md "The stands' sky"`: the file, then the
 section's name in quotes. When a section is renamed or removed such a reference leads nowhere, and nothing else
 notices (the twenty-fourth session found seven by hand). This check reads every file of the checkout that git tracks
-or would track, finds each `docs/NAME.md "Title"` (also `docs/NAME.md, "Title"` and `docs/NAME.md ("Title")`; inside
-docs/ also `NAME.md "Title"`), joins a title broken across comment lines or C++ string literals, and looks for it
-among NAME.md's headings and bold paragraph titles (`**Title.**` opening a paragraph or a list item): the whole
-title, or its start up to a word's end, as a reader finds a section by its first words. It prints each reference
-that names nothing (or a doc that does not exist), with its file and line, and exits 1 if there is one.
+or would track, finds each `docs/NAME.md "Title"` (also `docs/NAME.md, "Title"`, `docs/NAME.md ("Title")` and
+`docs/NAME.md "Title" and "Another"`; inside docs/ also `NAME.md "Title"`), joins a title broken across comment
+lines or C++ string literals, and looks for it among NAME.md's headings and bold paragraph titles (`**Title.**`
+opening a paragraph or a list item): the whole title, or its start up to a word's end, as a reader finds a section by
+its first words. It prints each reference that names nothing (or a doc that does not exist), with its file and line,
+and exits 1 if there is one.
 
     tests/docs/section_references.py [CHECKOUT]     (default: the checkout holding this script)
 """
@@ -24,6 +25,8 @@ REFERENCE = re.compile(r'(?:docs/|(?<![\w/.-]))([a-z][a-z_-]*)\.md'  # docs/ligh
                        r'(?:\]\([a-z_-]+\.md\))?`?,?'                # a Markdown link's target, a code mark, a comma
                        r'\s*(?:(?://+|#+|\*|>)[ \t]*)?'              # a line break in a comment
                        r'\(?["\u201c]')                              # the title's opening quote
+# A further title of the same doc after a title: `"A" and "B"`, `"A", "B"`, `"A"; "B"`, `"A" or "B"`.
+NEXT_TITLE = re.compile(r'(?:,|;)?[ \t]*(?:and|or)?[ \t]*["\u201c]')
 HEADING = re.compile(r'^#{1,6}\s+(.+?)\s*#*\s*$')
 BOLD_TITLE = re.compile(r'^\s*(?:[-*]\s+|\d+\.\s+)?\*\*(.+?)\*\*')
 # What opens a continuation line of a comment or a quoted block: it is dropped when a title is joined across lines.
@@ -86,7 +89,8 @@ def as_one_literal(text):
 
 
 def quoted_title(text, start):
-    """The title opening at text[start] (just past its opening quote), joined across line breaks; None if unclosed."""
+    """The title opening at text[start] (just past its opening quote), joined across line breaks, and where its closing
+    quote ends; None if it is not closed within a few lines."""
     pieces = []
     position = start
     for _ in range(4):  # a title spans at most a few comment lines
@@ -97,7 +101,7 @@ def quoted_title(text, start):
         close = re.search(r'["\u201d]', line)
         if close:
             pieces.append(line[:close.start()])
-            return ' '.join(pieces)
+            return ' '.join(pieces), position + close.end()
         pieces.append(line)
         if end_of_line == len(text):
             return None
@@ -112,16 +116,22 @@ def references_in(path, root):
     except (UnicodeDecodeError, OSError):
         return  # a binary file (an image, a compressed table)
     in_docs = path.parent == root / 'docs'
-    if path.suffix in ('.cpp', '.hpp', '.cl', '.h'):
+    if path.suffix in ('.cpp', '.hpp', '.h', '.cl', '.clh'):
         text = as_one_literal(text)
     for match in REFERENCE.finditer(text):
         if not match.group(0).startswith('docs/') and not in_docs:
             continue
-        title = quoted_title(text, match.end())
-        if title is None:
-            continue
+        quoted = quoted_title(text, match.end())
         line = text.count('\n', 0, match.start()) + 1
-        yield match.group(1), title, line
+        while quoted is not None:
+            title, end = quoted
+            yield match.group(1), title, line
+            # `docs/NAME.md "A" and "B"` cites two sections of NAME.md.
+            more = NEXT_TITLE.match(text, end)
+            if not more:
+                break
+            quoted = quoted_title(text, more.end())
+            line = text.count('\n', 0, more.start()) + 1
 
 
 def main():
