@@ -73,12 +73,13 @@ def tracked_files(root):
                                  '--exclude-standard'], check=True, capture_output=True).stdout
         return [root / name for name in listed.decode().split('\0') if name]
     except (OSError, subprocess.CalledProcessError):
-        # Not a checkout (a source archive): every file under the project's own folders.
+        # Not a checkout (a source archive): every file under the project's own folders, in git's order, so that the
+        # report reads the same either way.
         folders = ['src', 'cl', 'tests', 'validation', 'docs', 'stands', '.ci']
         files = [root / 'README.md', root / 'CMakeLists.txt']
         for folder in folders:
             files += [p for p in (root / folder).rglob('*') if p.is_file()]
-        return [p for p in files if p.exists()]
+        return sorted(p for p in files if p.exists())
 
 
 def as_one_literal(text):
