@@ -1,6 +1,6 @@
 # Every `docs/NAME.md "Section"` in the checkout names a section NAME.md has (tests/docs/section_references.py): a
-# renamed or removed section would otherwise leave code comments and docs pointing at nothing. The second test runs
-# the check on a small fixture whose broken references are known, so that a check that found nothing would fail.
+# renamed or removed section would otherwise leave code comments and docs pointing at nothing. The other two run the
+# check on a small fixture whose broken references are known, so that a check that found nothing would fail.
 find_program(HELIOSTAND_DOCS_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT HELIOSTAND_DOCS_PYTHON)
   find_program(HELIOSTAND_DOCS_PYTHON NAMES python3)
