@@ -1,10 +1,6 @@
 # The stand benchmark (validation/bench/, issue 16): its scenarios must stay valid, its committed surveys must be
 # what make_planted_stands.py writes, and scaling.py must turn `heliostand bench stand` runs into its table (on the
 # tiny bench stand for one year: timings are never checked, only that the row is there with the stand's counts).
-find_program(HELIOSTAND_BENCH_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT HELIOSTAND_BENCH_PYTHON)
-  find_program(HELIOSTAND_BENCH_PYTHON NAMES python3)
-endif()
 set(BENCH_DIR ${PROJECT_SOURCE_DIR}/validation/bench)
 
 file(GLOB HELIOSTAND_BENCH_SCENARIOS CONFIGURE_DEPENDS ${BENCH_DIR}/stands/*.toml)
@@ -16,14 +12,14 @@ endforeach()
 
 add_test(NAME bench.planted_surveys_are_generated
          COMMAND sh -c "rm -rf \"$0\" && \"$1\" \"$2/make_planted_stands.py\" \"$0\" && for f in planted_100 planted_400 planted_1600 planted_2500 old_100; do cmp \"$0/$f.csv\" \"$2/stands/$f.csv\" || exit 1; done"
-                 ${PROJECT_BINARY_DIR}/test-output/bench-surveys ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR})
+                 ${PROJECT_BINARY_DIR}/test-output/bench-surveys ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR})
 set_tests_properties(bench.planted_surveys_are_generated PROPERTIES LABELS "bench")
 # Its --help shows its usage (before, any first argument was taken for the folder: `--help` wrote one so named). The
 # option goes inside sh -c: given to cmake -P as an argument of its own, cmake takes it for its own --help.
 add_test(NAME bench.planted_surveys_script_shows_its_help
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 "-DEXPECT_OUTPUT=usage: make_planted_stands.py \\[-h\\] \\[folder\\]"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 sh -c "\"$0\" \"$1\" --help" ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/make_planted_stands.py)
+                 sh -c "\"$0\" \"$1\" --help" ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/make_planted_stands.py)
 set_tests_properties(bench.planted_surveys_script_shows_its_help PROPERTIES LABELS "bench" TIMEOUT 60
                      WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
 
@@ -32,7 +28,7 @@ set_tests_properties(bench.planted_surveys_script_shows_its_help PROPERTIES LABE
 add_test(NAME bench.scaling_table
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 "-DEXPECT_OUTPUT=\\| 8 \\| 8 \\| [1-9][0-9,]* \\| [1-9][0-9,]* \\| [0-9]+\\.[0-9] \\| [0-9]+\\.[0-9] \\| [0-9]+\\.[0-9] \\| [0-9]+ % \\|"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
                  --device reference --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling)
 set_tests_properties(bench.scaling_table PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
@@ -42,29 +38,29 @@ set_tests_properties(bench.scaling_table PROPERTIES LABELS "bench" TIMEOUT 300
 add_test(NAME bench.scaling_refuses_a_missing_program
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --heliostand: [^ ]*no-such-heliostand is not a program that can be run"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand ${PROJECT_BINARY_DIR}/no-such-heliostand
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand ${PROJECT_BINARY_DIR}/no-such-heliostand
                  --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
 add_test(NAME bench.scaling_refuses_zero_years
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --years: a whole number >= 1 is expected, got 0"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 0
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 0
                  --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
 add_test(NAME bench.scaling_reports_a_failed_run
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=device 'bogus'.*scaling.py: the run above failed \\(exit status 2\\); no table written"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
                  --device bogus --stand ${BENCH_DIR}/stands/tiny.toml --out ${PROJECT_BINARY_DIR}/test-output/bench-scaling-refused)
 # An --out that names a file, or no folder at all (`--out=`, a script's unset variable: the current folder before),
 # is refused before any stand is grown; before, a file ended in a Python traceback.
 add_test(NAME bench.scaling_refuses_a_file_for_its_folder
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --out: [^ ]*scaling.py exists and is not a folder"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
                  --stand ${BENCH_DIR}/stands/tiny.toml --out ${BENCH_DIR}/scaling.py)
 add_test(NAME bench.scaling_refuses_an_empty_folder_name
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --out: a folder name is expected, got an empty one"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/scaling.py --heliostand $<TARGET_FILE:heliostand> --years 1
                  --stand ${BENCH_DIR}/stands/tiny.toml --out=)
 set_tests_properties(bench.scaling_refuses_a_missing_program bench.scaling_refuses_zero_years
                      bench.scaling_reports_a_failed_run bench.scaling_refuses_a_file_for_its_folder
@@ -75,7 +71,7 @@ set_tests_properties(bench.scaling_refuses_a_missing_program bench.scaling_refus
 # does not tell these machines apart).
 add_test(NAME bench.scaling_table_same_binary_twice
          COMMAND sh -c "out=$(\"$0\" \"$1/scaling.py\" --heliostand \"$2\" --heliostand \"$2\" --years 1 --device reference --stand \"$1/stands/tiny.toml\" --out \"$3\") || exit 1; rows=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | 8 |'); ratios=$(printf '%s\\n' \"$out\" | grep -c '^| 8 | [0-9]*[.][0-9][0-9] | '); machine=$(printf '%s\\n' \"$out\" | grep -c '^Machine: [0-9]* CPUs (.*; CPU family [0-9a-z]*, model [0-9a-z]*; '); echo \"stand rows $rows (want 2), ratio rows $ratios (want 1), machine lines with the CPU family $machine (want 1)\"; [ \"$rows\" = 2 ] && [ \"$ratios\" = 1 ] && [ \"$machine\" = 1 ]"
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR} $<TARGET_FILE:heliostand> ${PROJECT_BINARY_DIR}/test-output/bench-scaling-twice)
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR} $<TARGET_FILE:heliostand> ${PROJECT_BINARY_DIR}/test-output/bench-scaling-twice)
 set_tests_properties(bench.scaling_table_same_binary_twice PROPERTIES LABELS "bench" TIMEOUT 300
                      ENVIRONMENT "POCL_CACHE_DIR=${PROJECT_BINARY_DIR}/pocl-cache")
 # The GPU machine's bundle (validation/bench/gpu): packed from this build with a second copy of heliostand as
@@ -108,10 +104,10 @@ set_tests_properties(bench.gpu_bundle_cli_tests_start_its_heliostand PROPERTIES 
 # are never checked. A size of 0 MiB is refused with what was wrong and exit 2.
 add_test(NAME bench.first_touch_measures_each_kind_and_time
          COMMAND sh -c "out=$(\"$0\" \"$1/first_touch.py\" --mib 4 --pause 0) || exit 1; printf '%s\\n' \"$out\"; lines=$(printf '%s\\n' \"$out\" | grep -c -E '^(4 KiB|huge) pages (fresh|right after unmapping|after 0 s): [0-9]+[.][0-9]{3} s a GiB [(]first pass[)], [0-9]+[.][0-9]{3} s a GiB [(]second pass[)]$'); echo \"measurement lines $lines (want 10)\"; [ \"$lines\" = 10 ]"
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR})
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR})
 add_test(NAME bench.first_touch_refuses_zero_mib
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=argument --mib: a whole number >= 1 is expected, got 0"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_BENCH_PYTHON} ${BENCH_DIR}/first_touch.py --mib 0)
+                 ${HELIOSTAND_TEST_PYTHON} ${BENCH_DIR}/first_touch.py --mib 0)
 set_tests_properties(bench.first_touch_measures_each_kind_and_time bench.first_touch_refuses_zero_mib PROPERTIES
                      LABELS "bench" TIMEOUT 60)

@@ -1,14 +1,10 @@
 # Every `docs/NAME.md "Section"` in the checkout names a section NAME.md has (tests/docs/section_references.py): a
 # renamed or removed section would otherwise leave code comments and docs pointing at nothing. The other two run the
 # check on a small fixture whose broken references are known, so that a check that found nothing would fail.
-find_program(HELIOSTAND_DOCS_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT HELIOSTAND_DOCS_PYTHON)
-  find_program(HELIOSTAND_DOCS_PYTHON NAMES python3)
-endif()
 set(DOCS_CHECK ${PROJECT_SOURCE_DIR}/tests/docs/section_references.py)
 
 add_test(NAME docs.section_references_name_sections
-         COMMAND ${HELIOSTAND_DOCS_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR})
+         COMMAND ${HELIOSTAND_TEST_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR})
 set_tests_properties(docs.section_references_name_sections PROPERTIES LABELS "docs" TIMEOUT 60)
 
 # The fixture's seven broken references (six titles it lacks, one doc it lacks), in file and line order, and its
@@ -26,7 +22,7 @@ string(CONCAT DOCS_FIXTURE_REPORT ${DOCS_FIXTURE_REPORT})
 add_test(NAME docs.section_references_check_reports_the_broken_ones
          COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=^${DOCS_FIXTURE_REPORT}\n*$"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_DOCS_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
+                 ${HELIOSTAND_TEST_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
 set_tests_properties(docs.section_references_check_reports_the_broken_ones PROPERTIES LABELS "docs" TIMEOUT 60)
 # The same where git cannot list the files (a source archive, as the mutation harness builds from): the script walks
 # the folders instead, and must report the same references in the same order.
@@ -34,5 +30,5 @@ add_test(NAME docs.section_references_check_reports_the_same_outside_git
          COMMAND ${CMAKE_COMMAND} -E env GIT_DIR=${PROJECT_BINARY_DIR}/no-such-git-folder
                  ${CMAKE_COMMAND} -DEXPECT_EXIT=1 "-DEXPECT_OUTPUT=^${DOCS_FIXTURE_REPORT}\n*$"
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                 ${HELIOSTAND_DOCS_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
+                 ${HELIOSTAND_TEST_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
 set_tests_properties(docs.section_references_check_reports_the_same_outside_git PROPERTIES LABELS "docs" TIMEOUT 60)

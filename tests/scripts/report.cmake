@@ -5,13 +5,8 @@
 # interpreter or matplotlib is refused with a message and no report left. The driver needs python3 with
 # matplotlib, as the command does.
 set(REPORT_TESTS ${PROJECT_BINARY_DIR}/tests/report)
-# Debian's python3-matplotlib installs for /usr/bin/python3; a python3 earlier on PATH (pyenv, a virtual
-# environment) may lack it. The command prefers the same interpreter (src/cli/report_command.cpp).
-find_program(HELIOSTAND_REPORT_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT HELIOSTAND_REPORT_PYTHON)
-  find_program(HELIOSTAND_REPORT_PYTHON NAMES python3)
-endif()
-set(PY ${HELIOSTAND_REPORT_PYTHON})
+# Debian's python3 (HELIOSTAND_TEST_PYTHON, tests/CMakeLists.txt), for which python3-matplotlib installs.
+set(PY ${HELIOSTAND_TEST_PYTHON})
 set(REPORT_DRIVER ${PROJECT_SOURCE_DIR}/tests/report/report_test.py)
 set(REPORT_TINY ${PROJECT_SOURCE_DIR}/stands/tiny/scenario.toml)
 
