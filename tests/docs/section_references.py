@@ -8,8 +8,10 @@ or would track, finds each `docs/NAME.md "Title"` (also `docs/NAME.md, "Title"`,
 `docs/NAME.md "Title" and "Another"`; inside docs/ also `NAME.md "Title"`), joins a title broken across comment
 lines or C++ string literals, and looks for it among NAME.md's headings and bold paragraph titles (`**Title.**`
 opening a paragraph or a list item): the whole title, or its start up to a word's end, as a reader finds a section by
-its first words. It prints each reference that names nothing (or a doc that does not exist), with its file and line,
-and exits 1 if there is one.
+its first words. A Markdown file's references to its own sections, `"Title" below` and `"Title" above` (also
+`("Title", above)`), are looked up among its own headings and must lie where they say: a section that exists only on
+the other side is reported too (a section moved, or the wrong word). It prints each reference that names nothing (or a
+doc that does not exist), with its file and line, and exits 1 if there is one.
 
     tests/docs/section_references.py [CHECKOUT]     (default: the checkout holding this script)
 """
@@ -27,6 +29,8 @@ REFERENCE = re.compile(r'(?:docs/|(?<![\w/.-]))([a-z][a-z_-]*)\.md'  # docs/ligh
                        r'\(?["\u201c]')                              # the title's opening quote
 # A further title of the same doc after a title: `"A" and "B"`, `"A", "B"`, `"A"; "B"`, `"A" or "B"`.
 NEXT_TITLE = re.compile(r'(?:,|;)?[ \t]*(?:and|or)?[ \t]*["\u201c]')
+# A reference inside a Markdown file to one of its own sections: the title in quotes, then where it lies.
+OWN_REFERENCE = re.compile(r'["\u201c]([^"\u201c\u201d]{2,200}?)["\u201d]\)?,?\s+\(?(below|above)\b')
 HEADING = re.compile(r'^#{1,6}\s+(.+?)\s*#*\s*$')
 BOLD_TITLE = re.compile(r'^\s*(?:[-*]\s+|\d+\.\s+)?\*\*(.+?)\*\*')
 # What opens a continuation line of a comment or a quoted block: it is dropped when a title is joined across lines.
@@ -41,10 +45,11 @@ def normalise(title):
 
 
 def sections_of(doc):
-    """NAME.md's section titles: its headings, without a leading section number ("3. "), and bold paragraph titles."""
+    """A Markdown file's section titles, each with its line: its headings, without a leading section number ("3. "),
+    and bold paragraph titles."""
     titles = []
     fenced = False
-    for line in doc.read_text(encoding='utf-8').splitlines():
+    for number, line in enumerate(doc.read_text(encoding='utf-8').splitlines(), start=1):
         if line.lstrip().startswith('```'):
             fenced = not fenced
             continue
@@ -53,18 +58,18 @@ def sections_of(doc):
         for pattern in (HEADING, BOLD_TITLE):
             match = pattern.match(line)
             if match:
-                titles.append(normalise(re.sub(r'^\d+(\.\d+)*\.\s+', '', match.group(1))))
+                titles.append((normalise(re.sub(r'^\d+(\.\d+)*\.\s+', '', match.group(1))), number))
     return titles
 
 
-def names_a_section(title, titles):
-    """A reference names a section by its title or by the title's start up to a word's end: "Thinning" finds
-    "3. Thinning", "Seed 001" finds "Seed 001: conifer architecture", "The 3 m cut-off by default" finds
-    "The 3 m cut-off by default (2026-11-24)"."""
+def lines_of_sections_named(title, titles):
+    """The lines of the sections a reference names, by their title or by the title's start up to a word's end:
+    "Thinning" finds "3. Thinning", "Seed 001" finds "Seed 001: conifer architecture", "The 3 m cut-off by default"
+    finds "The 3 m cut-off by default (2026-11-24)"."""
     title = normalise(title)
     if not title:
-        return False
-    return any(t == title or (t.startswith(title) and not t[len(title)].isalnum()) for t in titles)
+        return []
+    return [line for t, line in titles if t == title or (t.startswith(title) and not t[len(title)].isalnum())]
 
 
 def tracked_files(root):
@@ -112,6 +117,8 @@ def quoted_title(text, start):
 
 
 def references_in(path, root):
+    """Each reference in the file at `path`: (the doc it cites, the title, its line, and where the section lies: None
+    for a reference to another file, 'below' or 'above' for a Markdown file's reference to one of its own sections)."""
     try:
         text = path.read_text(encoding='utf-8')
     except (UnicodeDecodeError, OSError):
@@ -119,20 +126,42 @@ def references_in(path, root):
     in_docs = path.parent == root / 'docs'
     if path.suffix in ('.cpp', '.hpp', '.h', '.cl', '.clh'):
         text = as_one_literal(text)
+    cited_elsewhere = set()  # where the titles of references to another doc open, so as not to read them twice
     for match in REFERENCE.finditer(text):
         if not match.group(0).startswith('docs/') and not in_docs:
             continue
+        opening = match.end() - 1
         quoted = quoted_title(text, match.end())
         line = text.count('\n', 0, match.start()) + 1
         while quoted is not None:
             title, end = quoted
-            yield match.group(1), title, line
+            cited_elsewhere.add(opening)
+            yield root / 'docs' / f'{match.group(1)}.md', title, line, None
             # `docs/NAME.md "A" and "B"` cites two sections of NAME.md.
             more = NEXT_TITLE.match(text, end)
             if not more:
                 break
+            opening = more.end() - 1
             quoted = quoted_title(text, more.end())
             line = text.count('\n', 0, more.start()) + 1
+    if path.suffix != '.md':
+        return
+    for match in OWN_REFERENCE.finditer(text):
+        if match.start() not in cited_elsewhere:
+            yield path, match.group(1), text.count('\n', 0, match.start()) + 1, match.group(2)
+
+
+def problem_with(title, line, where, titles):
+    """What is wrong with a reference to the sections `titles` of a doc, or None: it names none of them, or (`where`
+    'below' or 'above', a reference at `line` to its own file) only one on the other side of it."""
+    lines = lines_of_sections_named(title, titles)
+    if not lines:
+        return f'has no section "{normalise(title)}"' + (f' {where}' if where else '')
+    if where == 'below' and not any(at > line for at in lines):
+        return f'has its section "{normalise(title)}" above, not below'
+    if where == 'above' and not any(at < line for at in lines):
+        return f'has its section "{normalise(title)}" below, not above'
+    return None
 
 
 def main():
@@ -152,19 +181,20 @@ def main():
     for path in tracked_files(root):
         if path == this_script or not path.is_file() or (fixture in path.parents and root != fixture):
             continue
-        for name, title, line in references_in(path, root):
-            doc = root / 'docs' / f'{name}.md'
+        for doc, title, line, where in references_in(path, root):
             checked += 1
+            cited = doc.relative_to(root)
             if not doc.is_file():
-                broken.append(f'{path.relative_to(root)}:{line}: docs/{name}.md: no such file')
+                broken.append(f'{path.relative_to(root)}:{line}: {cited}: no such file')
                 continue
-            if name not in sections:
-                sections[name] = sections_of(doc)
-            if not names_a_section(title, sections[name]):
-                broken.append(f'{path.relative_to(root)}:{line}: docs/{name}.md has no section "{normalise(title)}"')
+            if doc not in sections:
+                sections[doc] = sections_of(doc)
+            problem = problem_with(title, line, where, sections[doc])
+            if problem:
+                broken.append(f'{path.relative_to(root)}:{line}: {cited} {problem}')
     for message in broken:
         print(message)
-    print(f'{checked} references to sections of docs/ read, {len(broken)} naming none')
+    print(f'{checked} references to sections of the docs read, {len(broken)} broken')
     return 1 if broken else 0
 
 
