@@ -126,7 +126,7 @@ def references_in(path, root):
     in_docs = path.parent == root / 'docs'
     if path.suffix in ('.cpp', '.hpp', '.h', '.cl', '.clh'):
         text = as_one_literal(text)
-    cited_elsewhere = set()  # where the titles of references to another doc open, so as not to read them twice
+    cited_by_name = set()  # where the titles of `NAME.md "Title"` references open: not read again as own references
     for match in REFERENCE.finditer(text):
         if not match.group(0).startswith('docs/') and not in_docs:
             continue
@@ -135,7 +135,7 @@ def references_in(path, root):
         line = text.count('\n', 0, match.start()) + 1
         while quoted is not None:
             title, end = quoted
-            cited_elsewhere.add(opening)
+            cited_by_name.add(opening)
             yield root / 'docs' / f'{match.group(1)}.md', title, line, None
             # `docs/NAME.md "A" and "B"` cites two sections of NAME.md.
             more = NEXT_TITLE.match(text, end)
@@ -147,7 +147,7 @@ def references_in(path, root):
     if path.suffix != '.md':
         return
     for match in OWN_REFERENCE.finditer(text):
-        if match.start() not in cited_elsewhere:
+        if match.start() not in cited_by_name:
             yield path, match.group(1), text.count('\n', 0, match.start()) + 1, match.group(2)
 
 
