@@ -157,10 +157,9 @@ def problem_with(title, line, where, titles):
     lines = lines_of_sections_named(title, titles)
     if not lines:
         return f'has no section "{normalise(title)}"' + (f' {where}' if where else '')
-    if where == 'below' and not any(at > line for at in lines):
-        return f'has its section "{normalise(title)}" above, not below'
-    if where == 'above' and not any(at < line for at in lines):
-        return f'has its section "{normalise(title)}" below, not above'
+    if where and not any((at > line) == (where == 'below') for at in lines):
+        other_side = 'above' if where == 'below' else 'below'
+        return f'has its section "{normalise(title)}" {other_side}, not {where}'
     return None
 
 
