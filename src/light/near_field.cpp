@@ -125,9 +125,10 @@ std::vector<double> group_by_tile(std::span<const std::uint32_t> receivers, cons
 }
 
 // Each tile's list where the block of tiles that found it left it (`block_lists`, `tile_size` entries a tile) put
-// in its place in `lists.occluders`, and each receiver's scan end made absolute. The lists are indexed with 32 bits.
+// in its place in `place`'s room, or in `lists.occluders` without one, and each receiver's scan end made absolute. The
+// lists are indexed with 32 bits.
 void place_tile_lists(std::vector<std::vector<std::uint32_t>>& block_lists, std::span<const std::uint32_t> tile_size,
-                      TileCandidates& lists) {
+                      const TileListPlace* place, TileCandidates& lists) {
   const std::size_t tile_count = tile_size.size();
   lists.start.resize(tile_count + 1);
   std::uint64_t total = 0;
@@ -138,10 +139,17 @@ void place_tile_lists(std::vector<std::vector<std::uint32_t>>& block_lists, std:
                                "cutoff_m or a smaller stand");
     lists.start[t + 1] = std::uint32_t(total);
   }
-  lists.occluders.resize(total);
+  std::span<std::uint32_t> room;
+  if (place != nullptr) {
+    room = (*place)(total);
+    if (room.size() < total) throw std::logic_error("a place for the light's tile lists gave less room than asked");
+  } else {
+    lists.occluders.resize(total);
+    room = lists.occluders;
+  }
   parallel_for_blocks(tile_count, tiles_per_block, [&](std::size_t first_tile, std::size_t last_tile) {
     std::vector<std::uint32_t>& out = block_lists[first_tile / tiles_per_block];
-    std::copy(out.begin(), out.end(), lists.occluders.begin() + lists.start[first_tile]);
+    std::copy(out.begin(), out.end(), room.begin() + lists.start[first_tile]);
     std::vector<std::uint32_t>().swap(out);
     for (std::size_t t = first_tile; t < last_tile; ++t)
       for (auto k = lists.slot_start[t]; k < lists.slot_start[t + 1]; ++k) lists.scan_end[k] += lists.start[t];
@@ -151,6 +159,16 @@ void place_tile_lists(std::vector<std::vector<std::uint32_t>>& block_lists, std:
 }  // namespace
 
 TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> receivers, double tile_m) const {
+  return lay_out_tiles(receivers, tile_m, nullptr);
+}
+
+TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> receivers, double tile_m,
+                                                const TileListPlace& place) const {
+  return lay_out_tiles(receivers, tile_m, &place);
+}
+
+TileCandidates NearFieldSearch::lay_out_tiles(std::span<const std::uint32_t> receivers, double tile_m,
+                                              const TileListPlace* place) const {
   TileCandidates lists;
   lists.start.push_back(0);
   const std::vector<double> queries = group_by_tile(receivers, occluders_, tile_m, lists);
@@ -198,7 +216,7 @@ TileCandidates NearFieldSearch::tile_candidates(std::span<const std::uint32_t> r
       }
     }
   });
-  place_tile_lists(block_lists, tile_size, lists);
+  place_tile_lists(block_lists, tile_size, place, lists);
   return lists;
 }
 

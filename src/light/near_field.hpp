@@ -9,6 +9,7 @@
 // an occluder within the cut-off of a receiver at distance e from the centre lies within cut-off + e of it.
 // The result is CSR arrays, the layout the OpenCL kernel reads.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -24,6 +25,7 @@ struct TileCandidates {
   std::vector<std::uint32_t> slot_start;
   // Occluders (indices into the OccluderSet) whose centre lies within cut-off + half-diagonal of tile t's
   // centre: occluders[start[t] .. start[t+1]). A receiver itself is among its tile's occluders: skip it.
+  // `occluders` stays empty where the lists were laid out in a place of the caller's (TileListPlace).
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> occluders;
   // Per receiver slot position k (as `slots`): the end of the part of its tile's list that can hold an
@@ -32,7 +34,14 @@ struct TileCandidates {
   // cut-off + its own distance from the centre (+ 1 mm, far above the round-off of the kernel's float test).
   std::vector<std::uint32_t> scan_end;
   std::size_t tile_count() const { return slot_start.empty() ? 0 : slot_start.size() - 1; }
+  std::size_t entry_count() const { return start.empty() ? 0 : start.back(); }  // of every tile's list together
 };
+
+// Where the tiles' occluder lists go, end to end, instead of TileCandidates::occluders: given how many entries they
+// hold, room for that many. The OpenCL solver gives the device buffer its tile scan reads them from, mapped and kept
+// from one solve to the next, so that the lists are neither copied nor written to fresh pages each solve (at 10^6
+// balls 144 MB twice; docs/performance.md "The tile lists written where the device reads them").
+using TileListPlace = std::function<std::span<std::uint32_t>(std::size_t entries)>;
 
 // Tile edge for a cut-off: three quarters of the cut-off balances fewer searches (bigger tiles) against more occluders to
 // discard by distance in each receiver's loop (measured in docs/performance.md).
@@ -52,6 +61,10 @@ class NearFieldSearch {
   // Near-field candidates of the receivers (indices of the stand's balls, i.e. the first ball_count entries of
   // the OccluderSet), grouped into tiles of edge `tile_m`.
   TileCandidates tile_candidates(std::span<const std::uint32_t> receivers, double tile_m) const;
+  // The same lists, the occluders' laid out in `place` (called once, after the search; not at all when there are no
+  // tiles or no occluders), the result's `occluders` left empty.
+  TileCandidates tile_candidates(std::span<const std::uint32_t> receivers, double tile_m,
+                                 const TileListPlace& place) const;
 
   // True when occluder `j` shades receiver ball `i` in the near field: another entry whose centre lies within
   // the cut-off (double precision; the OpenCL kernel makes the same test in float).
@@ -59,6 +72,8 @@ class NearFieldSearch {
 
  private:
   struct Index;
+  // Both tile_candidates: the lists in `*place`, or in the result's `occluders` where `place` is null.
+  TileCandidates lay_out_tiles(std::span<const std::uint32_t> receivers, double tile_m, const TileListPlace* place) const;
   const OccluderSet& occluders_;
   double cutoff_m_;
   std::vector<double> coordinates_;  // row-major n x 3, owned here because FLANN keeps a pointer

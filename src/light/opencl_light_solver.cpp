@@ -9,6 +9,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <glm/common.hpp>
 
@@ -64,6 +65,52 @@ const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, st
     kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, kept.bytes);
   }
   return kept.buffer;
+}
+
+// Part of a buffer mapped for the host to write, its old contents given up (CL_MAP_WRITE_INVALIDATE_REGION), until
+// unmap(). On a CPU device the mapping is the buffer's own memory, so what the host writes there is not copied again.
+class MappedForWriting {
+ public:
+  MappedForWriting(const cl::CommandQueue& queue, const cl::Buffer& buffer, std::size_t bytes)
+      : queue_(queue), buffer_(buffer),
+        data_(queue_.enqueueMapBuffer(buffer_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, bytes)) {}
+  MappedForWriting(const MappedForWriting&) = delete;
+  MappedForWriting& operator=(const MappedForWriting&) = delete;
+  ~MappedForWriting() {
+    try {
+      unmap();
+    } catch (...) {  // only on an exception's way out, which goes on; unmap() called in time reports its own errors
+    }
+  }
+  void* data() const { return data_; }
+  // Queued: the kernels queued after it (in order) read what was written.
+  void unmap() {
+    if (data_ != nullptr) queue_.enqueueUnmapMemObject(buffer_, std::exchange(data_, nullptr));
+  }
+
+ private:
+  cl::CommandQueue queue_;
+  cl::Buffer buffer_;
+  void* data_;
+};
+
+// The near-field search's tile lists, the occluders' written by the search straight into `kept` (mapped), the buffer
+// the tile scan reads them from, kept from one solve to the next: not laid out on the host, nor copied to the device,
+// nor written to fresh pages once the buffer has room. At 10^6 balls that was 144 MB of fresh host pages cleared and
+// 144 MB more copied into a fresh buffer each solve (docs/performance.md "The tile lists written where the device reads
+// them"). `kept` holds at least one entry after this, whatever the lists hold.
+TileCandidates tile_lists_on_device(compute::OpenCLContext& device, const NearFieldSearch& search,
+                                    std::span<const std::uint32_t> receivers, double tile_m, KeptBuffer& kept) {
+  std::optional<MappedForWriting> mapped;
+  const TileListPlace place = [&](std::size_t entries) {
+    const std::size_t bytes = std::max<std::size_t>(entries, 1) * sizeof(std::uint32_t);
+    mapped.emplace(device.queue, kept_at_least(device.context, kept, bytes), bytes);
+    return std::span<std::uint32_t>(static_cast<std::uint32_t*>(mapped->data()), entries);
+  };
+  TileCandidates near = search.tile_candidates(receivers, tile_m, place);
+  if (mapped) mapped->unmap();
+  kept_at_least(device.context, kept, std::max<std::size_t>(near.entry_count(), 1) * sizeof(std::uint32_t));
+  return near;
 }
 
 // Which cells of the far field's table by cell the culled kernels will read, one byte a cell (cl/far_field.cl,
@@ -249,6 +296,7 @@ struct OpenCLLightSolver::Device {
   KeptBuffer far_field_table;  // sweep_far_field's, laid out by cell
   KeptBuffer far_field_read;   // mark_cells_read's, a byte a cell of the table
   KeptBuffer tile_entries_by_axis, tile_entry_tags;  // the tile lists as the culled kernels scan them
+  KeptBuffer tile_lists;  // the tiles' occluders as the search lays them out (tile_lists_on_device)
 };
 
 // What the fused pass (light_culled_and_alone) adds to a culled solve: each receiver's group lit alone as `solver`
@@ -495,7 +543,8 @@ std::vector<LightSample> OpenCLLightSolver::solve_culled(const DeviceStand& stan
 
   // Near-field candidates, one list per tile of receivers (light/near_field.hpp), laid out for the scan.
   part_start = Clock::now();
-  const TileCandidates near = search.tile_candidates(receivers, tile_edge_for(parameters_.cutoff_m));
+  const TileCandidates near = tile_lists_on_device(device_->cl, search, receivers, tile_edge_for(parameters_.cutoff_m),
+                                                   device_->tile_lists);
   double search_seconds = seconds_since(part_start);
   const std::optional<FusedPass> fused =
       alone != nullptr ? std::optional<FusedPass>(fused_pass_on_device(stand, balls, *alone)) : std::nullopt;
@@ -581,21 +630,21 @@ OpenCLLightSolver::TileScan OpenCLLightSolver::tile_scan_on_device(const DeviceS
       receiver_balls[k] = cl_int(receivers[near.slots[k]]);
       receiver_scan[k] = {{cl_int(near.start[tile]), cl_int(near.scan_end[k])}};
     }
-  const std::size_t entry_stride = near.occluders.size() + 8;  // room for a run of eight from the last entry
+  const std::size_t entry_stride = near.entry_count() + 8;  // room for a run of eight from the last entry
   if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
-    throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.occluders.size()) +
+    throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.entry_count()) +
                              " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
   const auto& context = device_->cl.context;
   const cl::Buffer& entries = kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
   const cl::Buffer& tags = kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
-  // The indices go as they are (unsigned, read as int by the kernel: the balls are fewer than 2^31, checked by
-  // solve_culled), not through an int copy of the whole list (144 MB at 10^6 balls).
-  const cl::Buffer occluders = read_only(context, near.occluders);
+  // The indices as the search wrote them (unsigned, read as int by the kernel: the balls are fewer than 2^31, checked
+  // by solve_culled), in the buffer tile_lists_on_device wrote them to.
+  const cl::Buffer& occluders = device_->tile_lists.buffer;
   auto& k = device_->tile_entries;
   int arg = 0;
   k.setArg(arg++, stand.balls);
   k.setArg(arg++, occluders);
-  k.setArg(arg++, cl_int(near.occluders.size()));
+  k.setArg(arg++, cl_int(near.entry_count()));
   k.setArg(arg++, fused != nullptr ? fused->entry_group : occluders);  // read only when tagged by group
   k.setArg(arg++, cl_int(fused != nullptr ? 1 : 0));
   k.setArg(arg++, cl_int(entry_stride));

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <numeric>
+#include <span>
+#include <stdexcept>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -107,6 +110,47 @@ TEST(NearFieldSearch, TheSameListsOnAnyNumberOfThreads) {
     EXPECT_EQ(near.scan_end, in_order.scan_end) << threads << " threads";
   }
   set_worker_threads(0);
+}
+
+// The OpenCL solver has the lists written into a device buffer of its own (TileListPlace): the same entries, in the
+// same places, as the lists the search keeps itself, and room asked for once, for exactly them; room in a place
+// that was not cleared (a buffer a larger solve wrote) is overwritten entry for entry.
+TEST(NearFieldSearch, ListsLaidOutInAPlaceOfTheCallersAreTheSame) {
+  const auto balls = scattered_balls(2000, 12.0, 4);
+  const OccluderSet set = make_occluder_set(balls, PlotTorus{}, 0.0);
+  std::vector<std::uint32_t> receivers;
+  for (std::uint32_t k = 0; k < balls.size(); k += 3) receivers.push_back(k);
+  const NearFieldSearch search(set, 2.0);
+  const TileCandidates own = search.tile_candidates(receivers, tile_edge_for(2.0));
+  ASSERT_GT(own.tile_count(), 64u);  // more than one block of tiles
+  std::vector<std::uint32_t> room(own.occluders.size() + 100, 0xdeadbeefu);  // left as a larger solve left it
+  std::vector<std::size_t> asked;
+  const TileCandidates placed = search.tile_candidates(receivers, tile_edge_for(2.0), [&](std::size_t entries) {
+    asked.push_back(entries);
+    return std::span<std::uint32_t>(room.data(), entries);
+  });
+  EXPECT_EQ(asked, std::vector<std::size_t>{own.occluders.size()});
+  EXPECT_TRUE(placed.occluders.empty());
+  EXPECT_EQ(placed.entry_count(), own.occluders.size());
+  EXPECT_EQ(own.entry_count(), own.occluders.size());
+  EXPECT_EQ(std::vector<std::uint32_t>(room.begin(), room.begin() + own.occluders.size()), own.occluders);
+  EXPECT_EQ(room[own.occluders.size()], 0xdeadbeefu);  // nothing written beyond the room given
+  EXPECT_EQ(placed.slots, own.slots);
+  EXPECT_EQ(placed.slot_start, own.slot_start);
+  EXPECT_EQ(placed.start, own.start);
+  EXPECT_EQ(placed.scan_end, own.scan_end);
+}
+
+TEST(NearFieldSearch, APlaceWithTooLittleRoomIsAnError) {
+  const auto balls = scattered_balls(300, 6.0, 5);
+  const OccluderSet set = make_occluder_set(balls, PlotTorus{}, 0.0);
+  std::vector<std::uint32_t> receivers(balls.size());
+  std::iota(receivers.begin(), receivers.end(), 0u);
+  std::vector<std::uint32_t> room(10);
+  const NearFieldSearch search(set, 2.0);
+  EXPECT_THROW(search.tile_candidates(receivers, tile_edge_for(2.0),
+                                      [&](std::size_t) { return std::span<std::uint32_t>(room); }),
+               std::logic_error);
 }
 
 TEST(NearFieldSearch, NoOccludersGiveEmptyLists) {
