@@ -108,8 +108,10 @@ TileCandidates tile_lists_on_device(compute::OpenCLContext& device, const NearFi
     return std::span<std::uint32_t>(static_cast<std::uint32_t*>(mapped->data()), entries);
   };
   TileCandidates near = search.tile_candidates(receivers, tile_m, place);
-  if (mapped) mapped->unmap();
-  kept_at_least(device.context, kept, std::max<std::size_t>(near.entry_count(), 1) * sizeof(std::uint32_t));
+  if (mapped)
+    mapped->unmap();
+  else  // no lists, so no room asked: still a buffer to hand the kernel
+    kept_at_least(device.context, kept, sizeof(std::uint32_t));
   return near;
 }
 
