@@ -15,6 +15,7 @@
 
 #include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
+#include "compute/opencl_kept_buffer.hpp"
 #include "compute/opencl_context.hpp"
 #include "core/seconds_since.hpp"
 #include "light/celestial_sphere.hpp"
@@ -49,50 +50,9 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& data) {
   return read_only(context, std::span<const T>(data));
 }
 
-// A device buffer kept from one solve to the next, and its size.
-struct KeptBuffer {
-  cl::Buffer buffer;
-  std::size_t bytes = 0;
-};
-
-// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy (never beyond
-// `cap_bytes`, unless `bytes` themselves are).
-const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes,
-                                std::size_t cap_bytes = std::numeric_limits<std::size_t>::max()) {
-  if (bytes > kept.bytes) {
-    kept.buffer = cl::Buffer();  // let the old one go before the new one is made
-    kept.bytes = std::max(bytes, std::min(bytes + bytes / 8, cap_bytes));
-    kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, kept.bytes);
-  }
-  return kept.buffer;
-}
-
-// Part of a buffer mapped for the host to write, its old contents given up (CL_MAP_WRITE_INVALIDATE_REGION), until
-// unmap(). On a CPU device the mapping is the buffer's own memory, so what the host writes there is not copied again.
-class MappedForWriting {
- public:
-  MappedForWriting(const cl::CommandQueue& queue, const cl::Buffer& buffer, std::size_t bytes)
-      : queue_(queue), buffer_(buffer),
-        data_(queue_.enqueueMapBuffer(buffer_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, bytes)) {}
-  MappedForWriting(const MappedForWriting&) = delete;
-  MappedForWriting& operator=(const MappedForWriting&) = delete;
-  ~MappedForWriting() {
-    try {
-      unmap();
-    } catch (...) {  // only on an exception's way out, which goes on; unmap() called in time reports its own errors
-    }
-  }
-  void* data() const { return data_; }
-  // Queued: the kernels queued after it (in order) read what was written.
-  void unmap() {
-    if (data_ != nullptr) queue_.enqueueUnmapMemObject(buffer_, std::exchange(data_, nullptr));
-  }
-
- private:
-  cl::CommandQueue queue_;
-  cl::Buffer buffer_;
-  void* data_;
-};
+using compute::kept_at_least;
+using compute::KeptBuffer;
+using compute::MappedForWriting;
 
 // The near-field search's tile lists, the occluders' written by the search straight into `kept` (mapped), the buffer
 // the tile scan reads them from, kept from one solve to the next: not laid out on the host, nor copied to the device,

@@ -9,24 +9,16 @@
 
 #include "compute/kernel_options.hpp"
 #include "compute/kernel_sources.hpp"
+#include "compute/opencl_kept_buffer.hpp"
 #include "compute/opencl_context.hpp"
 #include "core/parallel_for.hpp"
 #include "roots/segment_grid.hpp"
 
 namespace heliostand::roots {
 
-// A device buffer that is reused from query to query and only ever grows.
-struct GrowingBuffer {
-  cl::Buffer buffer;
-  std::size_t bytes = 0;
-  const cl::Buffer& holding(const cl::Context& context, cl_mem_flags flags, std::size_t needed) {
-    if (needed > bytes) {
-      bytes = std::max(needed, 2 * bytes);
-      buffer = cl::Buffer(context, flags, bytes);
-    }
-    return buffer;
-  }
-};
+using compute::kept_at_least;
+using compute::KeptBuffer;
+using compute::MappedForWriting;
 
 struct OpenCLRootFieldSolver::State {
   compute::OpenCLContext cl;
@@ -37,9 +29,11 @@ struct OpenCLRootFieldSolver::State {
   SegmentGrid grid;
   glm::dvec3 frame{0.0};
   bool has_soil = false;
-  cl::Buffer middle, start, end, segment_id, cell_start, moisture;
-  // One query's apices, probes and answers, reused by the next query of the year.
-  GrowingBuffer tips, excluded, probes, contact_out, moisture_out;
+  // Every buffer is kept from one year to the next and written again (compute/opencl_kept_buffer.hpp): a hectare's
+  // segments fill some 200 MB of them a year, which made anew were as many fresh pages each year.
+  KeptBuffer middle, start, end, segment_id, cell_start, moisture;
+  // One query's apices, probes and answers, reused by the next query.
+  KeptBuffer tips, excluded, probes, contact_out, moisture_out;
 };
 
 namespace {
@@ -48,70 +42,64 @@ cl_float4 to_float4(const glm::dvec3& v, double w = 0.0) {
   return {{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)}};
 }
 
-// OpenCL forbids zero-sized buffers: empty inputs get one unused element.
+// `data` into `kept` (grown when too small; OpenCL forbids zero-sized buffers, so it holds at least one element).
 template <class T>
-cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& data) {
-  static const T unused{};
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(T) * std::max<std::size_t>(data.size(), 1),
-                    const_cast<T*>(data.empty() ? &unused : data.data()));
+const cl::Buffer& kept_holding(compute::OpenCLContext& cl, KeptBuffer& kept, const std::vector<T>& data) {
+  const cl::Buffer& buffer = kept_at_least(cl.context, kept, sizeof(T) * std::max<std::size_t>(data.size(), 1));
+  if (!data.empty()) cl.queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, sizeof(T) * data.size(), data.data());
+  return buffer;
 }
 
-template <class T>
-void write(cl::CommandQueue& queue, const cl::Buffer& buffer, const std::vector<T>& data, std::size_t first = 0) {
-  if (!data.empty()) queue.enqueueWriteBuffer(buffer, CL_TRUE, sizeof(T) * first, sizeof(T) * data.size(), data.data());
-}
-
-// Segments this many at a time pass through the host's float staging arrays on their way to the device, so the
-// host never holds a float copy of the whole stand beside the device's.
+// Segments this many at a time are mapped for the host to write (on a GPU a mapping may be a host copy, so the host
+// never holds a float copy of the whole stand beside the device's).
 constexpr std::size_t segments_per_upload = std::size_t{1} << 16;
 // A worker thread's share of the host's conversions (segments of an upload, apices of a query).
 constexpr std::size_t items_per_block = std::size_t{1} << 12;
 
 // The year's segments in the grid's cell order (the kernel walks a cell's segments contiguously), each with its
-// midpoint and half length for a cheap first test, relative to `frame`.
-struct SegmentsOnDevice {
-  cl::Buffer middle, start, end;
-};
-
-SegmentsOnDevice segments_on_device(compute::OpenCLContext& cl, const SegmentList& segments, const SegmentGrid& grid,
-                                    const glm::dvec3& frame) {
-  const std::size_t count = std::max<std::size_t>(segments.size(), 1);
-  SegmentsOnDevice on_device{cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count),
-                             cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count),
-                             cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(cl_float4) * count)};
-  std::vector<cl_float4> middles, starts, ends;
+// midpoint and half length for a cheap first test, relative to `frame`, written into the kept `middle`, `start` and
+// `end`.
+void segments_on_device(compute::OpenCLContext& cl, const SegmentList& segments, const SegmentGrid& grid,
+                        const glm::dvec3& frame, KeptBuffer& middle, KeptBuffer& start, KeptBuffer& end) {
+  const std::size_t bytes = sizeof(cl_float4) * std::max<std::size_t>(segments.size(), 1);
+  const cl::Buffer& middles = kept_at_least(cl.context, middle, bytes);
+  const cl::Buffer& starts = kept_at_least(cl.context, start, bytes);
+  const cl::Buffer& ends = kept_at_least(cl.context, end, bytes);
   for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
     const std::size_t count_here = std::min(segments.size() - first, segments_per_upload);
-    middles.resize(count_here);
-    starts.resize(count_here);
-    ends.resize(count_here);
+    const std::size_t offset = sizeof(cl_float4) * first, length = sizeof(cl_float4) * count_here;
+    MappedForWriting middles_here(cl.queue, middles, length, offset), starts_here(cl.queue, starts, length, offset),
+        ends_here(cl.queue, ends, length, offset);
+    auto* const middle_data = static_cast<cl_float4*>(middles_here.data());
+    auto* const start_data = static_cast<cl_float4*>(starts_here.data());
+    auto* const end_data = static_cast<cl_float4*>(ends_here.data());
     // Entries convert independently (a gather from the trees' lists in cell order): blocks of them go to the worker
     // threads, since this host work is not shortened by a faster device.
     parallel_for_blocks(count_here, items_per_block, [&](std::size_t from, std::size_t to) {
       for (std::size_t k = from; k < to; ++k) {
         const RootSegmentLine segment = segments[static_cast<std::size_t>(grid.cell_segments[first + k])];
-        middles[k] = to_float4(0.5 * (segment.start + segment.end) - frame, 0.5 * glm::length(segment.end - segment.start));
-        starts[k] = to_float4(segment.start - frame);
-        ends[k] = to_float4(segment.end - frame);
+        middle_data[k] =
+            to_float4(0.5 * (segment.start + segment.end) - frame, 0.5 * glm::length(segment.end - segment.start));
+        start_data[k] = to_float4(segment.start - frame);
+        end_data[k] = to_float4(segment.end - frame);
       }
     });
-    write(cl.queue, on_device.middle, middles, first);
-    write(cl.queue, on_device.start, starts, first);
-    write(cl.queue, on_device.end, ends, first);
+    middles_here.unmap();
+    starts_here.unmap();
+    ends_here.unmap();
   }
-  return on_device;
 }
 
 // The soil's moisture at its vertices and where they lie relative to `frame`; without soil, one unused value (the
 // kernel is told there is none).
 struct SoilOnDevice {
-  cl::Buffer moisture;
   cl_int4 vertices{{2, 2, 2, 0}};
   cl_float4 origin{{0, 0, 0, 0}};
   float spacing = 1.0f;
 };
 
-SoilOnDevice soil_on_device(const cl::Context& context, const SoilGrid* soil, const glm::dvec3& frame) {
+SoilOnDevice soil_on_device(compute::OpenCLContext& cl, const SoilGrid* soil, const glm::dvec3& frame,
+                            KeptBuffer& kept) {
   SoilOnDevice on_device;
   std::vector<float> moisture;
   if (soil != nullptr) {
@@ -122,7 +110,7 @@ SoilOnDevice soil_on_device(const cl::Context& context, const SoilGrid* soil, co
     on_device.origin = to_float4(soil->min_corner() - frame);
     on_device.spacing = static_cast<float>(soil->geometry().spacing_m);
   }
-  on_device.moisture = read_only_buffer(context, moisture);
+  kept_holding(cl, kept, moisture);
   return on_device;
 }
 
@@ -145,28 +133,26 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.grid = SegmentGrid::build(year.segments, year.widest_perception_radius_m);
   // One frame origin for everything on the device keeps float positions small (sub-micrometre over 100 m).
   s.frame = year.soil != nullptr ? year.soil->min_corner() : s.grid.origin;
-  SegmentsOnDevice segments = segments_on_device(s.cl, year.segments, s.grid, s.frame);
-  s.middle = std::move(segments.middle), s.start = std::move(segments.start), s.end = std::move(segments.end);
+  segments_on_device(s.cl, year.segments, s.grid, s.frame, s.middle, s.start, s.end);
   // Each segment's index in the year's list, for the exclusions, and where each cell's segments start.
-  s.segment_id = read_only_buffer(s.cl.context, s.grid.cell_segments);
-  s.cell_start = read_only_buffer(s.cl.context, s.grid.cell_start);
+  kept_holding(s.cl, s.segment_id, s.grid.cell_segments);
+  kept_holding(s.cl, s.cell_start, s.grid.cell_start);
   // The device has the grid's index arrays now; the host keeps only its geometry (to sort apices by cell).
   std::vector<int>().swap(s.grid.cell_segments);
   std::vector<int>().swap(s.grid.cell_start);
-  SoilOnDevice soil = soil_on_device(s.cl.context, year.soil, s.frame);
-  s.moisture = std::move(soil.moisture);
+  const SoilOnDevice soil = soil_on_device(s.cl, year.soil, s.frame, s.moisture);
   s.has_soil = year.soil != nullptr;
 
-  s.kernel.setArg(0, s.middle);
-  s.kernel.setArg(1, s.start);
-  s.kernel.setArg(2, s.end);
-  s.kernel.setArg(3, s.segment_id);
-  s.kernel.setArg(4, s.cell_start);
+  s.kernel.setArg(0, s.middle.buffer);
+  s.kernel.setArg(1, s.start.buffer);
+  s.kernel.setArg(2, s.end.buffer);
+  s.kernel.setArg(3, s.segment_id.buffer);
+  s.kernel.setArg(4, s.cell_start.buffer);
   s.kernel.setArg(5, cl_int4{{s.grid.dims.x, s.grid.dims.y, s.grid.dims.z, 0}});
   s.kernel.setArg(6, to_float4(s.grid.origin - s.frame));
   s.kernel.setArg(7, static_cast<float>(s.grid.cell_size_m));
   s.kernel.setArg(8, static_cast<float>(s.grid.longest_half_m));
-  s.kernel.setArg(14, s.moisture);
+  s.kernel.setArg(14, s.moisture.buffer);
   s.kernel.setArg(15, soil.vertices);
   s.kernel.setArg(16, soil.origin);
   s.kernel.setArg(17, soil.spacing);
@@ -174,12 +160,8 @@ void OpenCLRootFieldSolver::begin_year(const RootFieldYear& year) {
   s.has_year = true;
 }
 
-void OpenCLRootFieldSolver::end_year() {
-  State& s = *state_;
-  s.has_year = false;
-  s.middle = s.start = s.end = s.segment_id = s.cell_start = s.moisture = cl::Buffer();
-  s.tips = s.excluded = s.probes = s.contact_out = s.moisture_out = GrowingBuffer{};
-}
+// The buffers stay for the next year's field (written anew in begin_year); only the year is over.
+void OpenCLRootFieldSolver::end_year() { state_->has_year = false; }
 
 std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTipQuery> tips,
                                                           std::span<const glm::dvec3> probes, int probes_per_tip) {
@@ -197,29 +179,39 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTi
   });
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
   const auto per_tip = static_cast<std::size_t>(s.has_soil ? std::max(probes_per_tip, 0) : 0);
-  std::vector<cl_float4> tip_data(tips.size()), probe_data(std::max<std::size_t>(tips.size() * per_tip, 1));
-  std::vector<cl_int2> excluded(tips.size());
-  parallel_for_blocks(tips.size(), items_per_block, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) {
-      const RootTipQuery& tip = tips[order[i]];
-      tip_data[i] = to_float4(tip.position - s.frame, tip.perception_radius_m);
-      excluded[i] = {{tip.excluded[0], tip.excluded[1]}};
-      for (std::size_t p = 0; p < per_tip; ++p) probe_data[i * per_tip + p] = to_float4(probes[order[i] * per_tip + p]);
-    }
-  });
-
-  const std::size_t tip_count = tips.size();
+  const std::size_t tip_count = tips.size(), probe_count = std::max<std::size_t>(tip_count * per_tip, 1);
   const cl::Context& context = s.cl.context;
-  s.kernel.setArg(9, s.tips.holding(context, CL_MEM_READ_ONLY, sizeof(cl_float4) * tip_count));
-  s.kernel.setArg(10, s.excluded.holding(context, CL_MEM_READ_ONLY, sizeof(cl_int2) * tip_count));
+  const cl::Buffer& tip_buffer = kept_at_least(context, s.tips, sizeof(cl_float4) * tip_count);
+  const cl::Buffer& excluded_buffer = kept_at_least(context, s.excluded, sizeof(cl_int2) * tip_count);
+  const cl::Buffer& probe_buffer = kept_at_least(context, s.probes, sizeof(cl_float4) * probe_count);
+  {
+    // The apices and probes written where the kernel reads them (mapped), in cell order.
+    MappedForWriting tips_here(s.cl.queue, tip_buffer, sizeof(cl_float4) * tip_count),
+        excluded_here(s.cl.queue, excluded_buffer, sizeof(cl_int2) * tip_count),
+        probes_here(s.cl.queue, probe_buffer, sizeof(cl_float4) * probe_count);
+    auto* const tip_data = static_cast<cl_float4*>(tips_here.data());
+    auto* const excluded_data = static_cast<cl_int2*>(excluded_here.data());
+    auto* const probe_data = static_cast<cl_float4*>(probes_here.data());
+    parallel_for_blocks(tip_count, items_per_block, [&](std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) {
+        const RootTipQuery& tip = tips[order[i]];
+        tip_data[i] = to_float4(tip.position - s.frame, tip.perception_radius_m);
+        excluded_data[i] = {{tip.excluded[0], tip.excluded[1]}};
+        for (std::size_t p = 0; p < per_tip; ++p) probe_data[i * per_tip + p] = to_float4(probes[order[i] * per_tip + p]);
+      }
+    });
+    tips_here.unmap();
+    excluded_here.unmap();
+    probes_here.unmap();
+  }
+
+  s.kernel.setArg(9, tip_buffer);
+  s.kernel.setArg(10, excluded_buffer);
   s.kernel.setArg(11, static_cast<cl_int>(tip_count));
-  s.kernel.setArg(12, s.probes.holding(context, CL_MEM_READ_ONLY, sizeof(cl_float4) * probe_data.size()));
+  s.kernel.setArg(12, probe_buffer);
   s.kernel.setArg(13, static_cast<cl_int>(per_tip));
-  s.kernel.setArg(19, s.contact_out.holding(context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count));
-  s.kernel.setArg(20, s.moisture_out.holding(context, CL_MEM_WRITE_ONLY, sizeof(cl_float4) * tip_count));
-  write(s.cl.queue, s.tips.buffer, tip_data);
-  write(s.cl.queue, s.excluded.buffer, excluded);
-  write(s.cl.queue, s.probes.buffer, probe_data);
+  s.kernel.setArg(19, kept_at_least(context, s.contact_out, sizeof(cl_float4) * tip_count));
+  s.kernel.setArg(20, kept_at_least(context, s.moisture_out, sizeof(cl_float4) * tip_count));
   compute::launch(s.cl, s.kernel, tip_count);
 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);

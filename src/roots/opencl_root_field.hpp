@@ -1,8 +1,8 @@
 #pragma once
 // The root-contact field on OpenCL (kernel cl/roots.cl, float on the device). Once a year (begin_year) the host
-// builds the uniform segment grid (segment_grid.hpp) and uploads the segments, as floats relative to one frame
-// origin, and the soil's moisture; each query then uploads only its apices and probes and reads back one contact
-// vector and one moisture pull per apex. It runs on the compute backend's device
+// builds the uniform segment grid (segment_grid.hpp) and writes the segments, as floats relative to one frame
+// origin, and the soil's moisture into device buffers kept from one year to the next; each query then writes only
+// its apices and probes and reads back one contact vector and one moisture pull per apex. It runs on the compute backend's device
 // (compute/compute_backend.hpp), in the context and queue the light solver uses too.
 #include <memory>
 

@@ -119,7 +119,10 @@ class RootFieldSolver {
   // per tip. Any number of queries per year: a tip's answer does not depend on which other tips share its query.
   virtual std::vector<RootFieldSample> query(std::span<const RootTipQuery> tips, std::span<const glm::dvec3> probes,
                                              int probes_per_tip) = 0;
-  // After the year's last query: frees what begin_year() built, so nothing of the field is held between years.
+  // After the year's last query: the year is over (a query before the next begin_year() is an error). The reference
+  // frees its index; the OpenCL solver keeps its device buffers, room for the next year's field written anew (a
+  // buffer made anew each year is as many fresh pages: docs/performance.md "The root-contact field's buffers kept
+  // from one year to the next, where fresh pages are dear").
   virtual void end_year() = 0;
   // Everything at once: begin_year() with the widest R of the tips, one query, end_year().
   std::vector<RootFieldSample> solve(const RootFieldInput& input);

@@ -1,0 +1,44 @@
+#pragma once
+// Device buffers kept from one use to the next (a solve of the light, a year of the root-contact field), and the
+// host's writes into them without a copy. On a CPU device (PoCL) a buffer made anew is fresh memory that the
+// operating system hands out page by page on its first write; on some machines that first write costs as much as the
+// work done with it (docs/performance.md "The tile lists written where the device reads them"). A buffer kept and
+// written again costs no such faults. Included only by opencl_*.cpp files (the OpenCL backend is optional).
+#include <cstddef>
+#include <limits>
+
+#include <CL/opencl.hpp>
+
+namespace heliostand::compute {
+
+// A device buffer kept from one use to the next, and its size.
+struct KeptBuffer {
+  cl::Buffer buffer;
+  std::size_t bytes = 0;
+};
+
+// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy or root system
+// (never beyond `cap_bytes`, unless `bytes` themselves are). What it held before is undefined after a regrowth.
+const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes,
+                                std::size_t cap_bytes = std::numeric_limits<std::size_t>::max());
+
+// Part of a buffer mapped for the host to write, its old contents given up (CL_MAP_WRITE_INVALIDATE_REGION), until
+// unmap(). On a CPU device the mapping is the buffer's own memory, so what the host writes there is not copied again.
+class MappedForWriting {
+ public:
+  MappedForWriting(const cl::CommandQueue& queue, const cl::Buffer& buffer, std::size_t bytes,
+                   std::size_t offset = 0);
+  MappedForWriting(const MappedForWriting&) = delete;
+  MappedForWriting& operator=(const MappedForWriting&) = delete;
+  ~MappedForWriting();
+  void* data() const { return data_; }
+  // Queued: the kernels queued after it (in order) read what was written.
+  void unmap();
+
+ private:
+  cl::CommandQueue queue_;
+  cl::Buffer buffer_;
+  void* data_;
+};
+
+}  // namespace heliostand::compute
