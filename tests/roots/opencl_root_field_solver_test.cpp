@@ -38,6 +38,21 @@ std::unique_ptr<RootFieldSolver> make_opencl_or_null() {
   return device ? make_root_field_solver(*device) : nullptr;
 }
 
+// Every apex's answer the same, bit for bit, and a quarter of them with contacts (the comparison is not vacuous).
+void expect_the_same_bit_for_bit(const std::vector<RootFieldSample>& actual, const std::vector<RootFieldSample>& alone) {
+  ASSERT_EQ(actual.size(), alone.size());
+  int with_contacts = 0;
+  for (std::size_t t = 0; t < alone.size(); ++t) {
+    ASSERT_EQ(actual[t].contacts, alone[t].contacts) << "apex " << t;
+    for (int axis = 0; axis < 3; ++axis) {
+      ASSERT_EQ(actual[t].contact_avoidance[axis], alone[t].contact_avoidance[axis]) << "apex " << t;
+      ASSERT_EQ(actual[t].moisture_pull[axis], alone[t].moisture_pull[axis]) << "apex " << t;
+    }
+    if (alone[t].contacts > 0) ++with_contacts;
+  }
+  EXPECT_GT(with_contacts, static_cast<int>(alone.size() / 4));
+}
+
 TEST(OpenCLRootFieldSolver, MatchesTheReferenceOnGrownRootSystems) {
   auto opencl = make_opencl_or_null();
   if (!opencl) GTEST_SKIP() << "no OpenCL device";
@@ -57,13 +72,7 @@ TEST(OpenCLRootFieldSolver, MatchesTheReferenceOnGrownRootSystems) {
     for (std::size_t t = 0; t < tips.size(); ++t) {
       for (int axis = 0; axis < 3; ++axis)
         ASSERT_NEAR(actual[t].moisture_pull[axis], expected[t].moisture_pull[axis], 1e-4) << "apex " << t;
-      bool on_the_edge = false;  // a segment within 1e-4 m of the sphere's surface
-      for (std::size_t s = 0; s < segments.lines.size(); ++s) {
-        const double distance = glm::length(nearest_point_on_segment(tips[t].position, segments.lines[s]) - tips[t].position);
-        if (std::abs(distance - tips[t].perception_radius_m) < 1e-5 || std::abs(distance - touching_distance_m) < 1e-6)
-          on_the_edge = true;
-      }
-      if (on_the_edge) continue;
+      if (on_the_edge(tips[t], segments.lines)) continue;
       ++compared;
       if (expected[t].contacts > 0) ++with_contacts;
       ASSERT_EQ(actual[t].contacts, expected[t].contacts) << "apex " << t;
@@ -97,6 +106,18 @@ TEST(OpenCLRootFieldSolver, GrowsTheSameRootSystemsAsTheReference) {
   }
 }
 
+// Two stands of grown roots, one of three trees and one of ten, with apices at every segment end: a year and a larger
+// one for the solver's kept state.
+struct SmallAndLargeStands {
+  GrownStand small = test_stands::grown_stand(4, 2), large = test_stands::grown_stand(10, 1);
+  test_stands::ApexQueries small_queries, large_queries;
+  SmallAndLargeStands() {
+    small.trees.pop_back();
+    small_queries = test_stands::apices_at_every_segment_end(small, 2);
+    large_queries = test_stands::apices_at_every_segment_end(large, 1);
+  }
+};
+
 // One solver serves every year of a run, and its kernel keeps the arguments one year set until the next sets them
 // again. A year with fewer segments, cells, apices and soil vertices than the year before, in another soil (another
 // frame origin), must use nothing that year set: its answers are those of a solver that never saw the larger year,
@@ -106,27 +127,14 @@ TEST(OpenCLRootFieldSolver, AYearAfterALargerOneAnswersAsAFreshSolverDoes) {
   if (!kept) GTEST_SKIP() << "no OpenCL device";
   auto fresh = make_opencl_or_null();
   ASSERT_TRUE(fresh);
-  GrownStand large = test_stands::grown_stand(10, 1), small = test_stands::grown_stand(4, 2);
-  small.trees.pop_back();
+  SmallAndLargeStands stands;
+  ASSERT_GT(stands.large_queries.segments.lines.size(), 2 * stands.small_queries.segments.lines.size());
   SoilGrid small_soil{{{-3.0, -3.0, -2.0}, 0.25, {24, 24, 8}}, 1.0, 0.5};
   small_soil.fill_gradient(SoilField::moisture, 0, 0.9, 0.2);
-  const test_stands::ApexQueries large_queries = test_stands::apices_at_every_segment_end(large, 1);
-  const test_stands::ApexQueries small_queries = test_stands::apices_at_every_segment_end(small, 2);
-  ASSERT_GT(large_queries.segments.lines.size(), 2 * small_queries.segments.lines.size());
-  kept->solve(large_queries.input(large.soil));
-  const auto after_large = kept->solve(small_queries.input(small_soil));
-  const auto alone = fresh->solve(small_queries.input(small_soil));
-  ASSERT_EQ(after_large.size(), alone.size());
-  int with_contacts = 0;
-  for (std::size_t t = 0; t < alone.size(); ++t) {
-    ASSERT_EQ(after_large[t].contacts, alone[t].contacts) << "apex " << t;
-    for (int axis = 0; axis < 3; ++axis) {
-      ASSERT_EQ(after_large[t].contact_avoidance[axis], alone[t].contact_avoidance[axis]) << "apex " << t;
-      ASSERT_EQ(after_large[t].moisture_pull[axis], alone[t].moisture_pull[axis]) << "apex " << t;
-    }
-    if (alone[t].contacts > 0) ++with_contacts;
-  }
-  EXPECT_GT(with_contacts, static_cast<int>(alone.size() / 4));  // the comparison is not vacuous
+  kept->solve(stands.large_queries.input(stands.large.soil));
+  const auto after_large = kept->solve(stands.small_queries.input(small_soil));
+  const auto alone = fresh->solve(stands.small_queries.input(small_soil));
+  expect_the_same_bit_for_bit(after_large, alone);
 }
 
 // The solver keeps its buffers from one year to the next and from one query to the next, growing them when a year
@@ -137,16 +145,15 @@ TEST(OpenCLRootFieldSolver, AYearLargerThanTheLastAndALargerQueryAnswerAsAFreshS
   if (!kept) GTEST_SKIP() << "no OpenCL device";
   auto fresh = make_opencl_or_null();
   ASSERT_TRUE(fresh);
-  GrownStand small = test_stands::grown_stand(4, 2), large = test_stands::grown_stand(10, 1);
-  const test_stands::ApexQueries small_queries = test_stands::apices_at_every_segment_end(small, 2);
-  const test_stands::ApexQueries large_queries = test_stands::apices_at_every_segment_end(large, 1);
-  ASSERT_GT(large_queries.segments.lines.size(), 2 * small_queries.segments.lines.size());
-  kept->solve(small_queries.input(small.soil));
+  SmallAndLargeStands stands;
+  ASSERT_GT(stands.large_queries.segments.lines.size(), 2 * stands.small_queries.segments.lines.size());
+  kept->solve(stands.small_queries.input(stands.small.soil));
 
+  const test_stands::ApexQueries& large_queries = stands.large_queries;
   const std::vector<RootTipQuery>& tips = large_queries.tips;
   RootFieldYear year;
   year.segments = SegmentList(large_queries.segments.lines);
-  year.soil = &large.soil;
+  year.soil = &stands.large.soil;
   for (const RootTipQuery& tip : tips)  // as solve() sizes the grid
     year.widest_perception_radius_m = std::max(year.widest_perception_radius_m, tip.perception_radius_m);
   kept->begin_year(year);
@@ -155,18 +162,8 @@ TEST(OpenCLRootFieldSolver, AYearLargerThanTheLastAndALargerQueryAnswerAsAFreshS
               large_queries.probes_per_tip);
   const auto after_few = kept->query(tips, large_queries.probes, large_queries.probes_per_tip);
   kept->end_year();
-  const auto alone = fresh->solve(large_queries.input(large.soil));
-  ASSERT_EQ(after_few.size(), alone.size());
-  int with_contacts = 0;
-  for (std::size_t t = 0; t < alone.size(); ++t) {
-    ASSERT_EQ(after_few[t].contacts, alone[t].contacts) << "apex " << t;
-    for (int axis = 0; axis < 3; ++axis) {
-      ASSERT_EQ(after_few[t].contact_avoidance[axis], alone[t].contact_avoidance[axis]) << "apex " << t;
-      ASSERT_EQ(after_few[t].moisture_pull[axis], alone[t].moisture_pull[axis]) << "apex " << t;
-    }
-    if (alone[t].contacts > 0) ++with_contacts;
-  }
-  EXPECT_GT(with_contacts, static_cast<int>(alone.size() / 4));  // the comparison is not vacuous
+  const auto alone = fresh->solve(large_queries.input(stands.large.soil));
+  expect_the_same_bit_for_bit(after_few, alone);
 }
 
 // A year's segments reach the device 65 536 at a time (opencl_root_field.cpp, segments_per_upload), each part written
