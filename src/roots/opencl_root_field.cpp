@@ -44,10 +44,9 @@ cl_float4 to_float4(const glm::dvec3& v, double w = 0.0) {
 
 // `data` into `kept` (grown when too small; OpenCL forbids zero-sized buffers, so it holds at least one element).
 template <class T>
-const cl::Buffer& kept_holding(compute::OpenCLContext& cl, KeptBuffer& kept, const std::vector<T>& data) {
+void kept_holding(compute::OpenCLContext& cl, KeptBuffer& kept, const std::vector<T>& data) {
   const cl::Buffer& buffer = kept_at_least(cl.context, kept, sizeof(T) * std::max<std::size_t>(data.size(), 1));
   if (!data.empty()) cl.queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, sizeof(T) * data.size(), data.data());
-  return buffer;
 }
 
 // Segments this many at a time are mapped for the host to write (on a GPU a mapping may be a host copy, so the host
