@@ -1,16 +1,24 @@
 #include "compute/opencl_kept_buffer.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 
 namespace heliostand::compute {
 
-const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes,
+std::size_t spare_bytes(const OpenCLContext& device, std::size_t bytes) {
+  return (device.type & CL_DEVICE_TYPE_CPU) ? bytes : bytes / 8;
+}
+
+const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, std::size_t bytes,
                                 std::size_t cap_bytes) {
   if (bytes > kept.bytes) {
     kept.buffer = cl::Buffer();  // let the old one go before the new one is made
-    kept.bytes = std::max(bytes, std::min(bytes + bytes / 8, cap_bytes));
-    kept.buffer = cl::Buffer(context, CL_MEM_READ_WRITE, kept.bytes);
+    std::size_t most = cap_bytes;
+    if (device.memory.buffer_bytes > 0) most = std::min<std::uint64_t>(most, device.memory.buffer_bytes);
+    const std::size_t room = bytes > most ? 0 : std::min(spare_bytes(device, bytes), most - bytes);
+    kept.bytes = bytes + room;
+    kept.buffer = cl::Buffer(device.context, CL_MEM_READ_WRITE, kept.bytes);
   }
   return kept.buffer;
 }

@@ -9,6 +9,8 @@
 
 #include <CL/opencl.hpp>
 
+#include "compute/opencl_context.hpp"
+
 namespace heliostand::compute {
 
 // A device buffer kept from one use to the next, and its size.
@@ -17,10 +19,19 @@ struct KeptBuffer {
   std::size_t bytes = 0;
 };
 
-// `kept`, made anew only when `bytes` outgrow it, then with an eighth to spare for a growing canopy or root system
-// (never beyond `cap_bytes`, unless `bytes` themselves are). What it held before is undefined after a regrowth.
-const cl::Buffer& kept_at_least(const cl::Context& context, KeptBuffer& kept, std::size_t bytes,
+// `kept`, made anew only when `bytes` outgrow it, then with room to spare for a growing canopy or root system
+// (spare_bytes; never beyond `cap_bytes` nor the device's largest buffer, unless `bytes` themselves are). What it
+// held before is undefined after a regrowth.
+const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, std::size_t bytes,
                                 std::size_t cap_bytes = std::numeric_limits<std::size_t>::max());
+
+// The room a kept buffer is made with beyond the `bytes` asked. On a CPU device a buffer is the host's memory, which
+// the operating system backs page by page at its first write, so room never written costs address space, not memory;
+// and a buffer made anew is written into fresh pages whole. So there the spare is as much again: a canopy growing year
+// by year fills a buffer's new pages as it grows and is copied into a new one a few times over a run, where with an
+// eighth to spare it was every eighth of its growth (docs/performance.md "Kept buffers with room to grow on a CPU
+// device"). Elsewhere a buffer is the device's memory outright, and an eighth is spared.
+std::size_t spare_bytes(const OpenCLContext& device, std::size_t bytes);
 
 // Part of a buffer mapped for the host to write, its old contents given up (CL_MAP_WRITE_INVALIDATE_REGION), until
 // unmap(). On a CPU device the mapping is the buffer's own memory, so what the host writes there is not copied again.

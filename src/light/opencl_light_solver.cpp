@@ -64,14 +64,14 @@ TileCandidates tile_lists_on_device(compute::OpenCLContext& device, const NearFi
   std::optional<MappedForWriting> mapped;
   const TileListPlace place = [&](std::size_t entries) {
     const std::size_t bytes = std::max<std::size_t>(entries, 1) * sizeof(std::uint32_t);
-    mapped.emplace(device.queue, kept_at_least(device.context, kept, bytes), bytes);
+    mapped.emplace(device.queue, kept_at_least(device, kept, bytes), bytes);
     return std::span<std::uint32_t>(static_cast<std::uint32_t*>(mapped->data()), entries);
   };
   TileCandidates near = search.tile_candidates(receivers, tile_m, place);
   if (mapped)
     mapped->unmap();
   else  // no lists, so no room asked: still a buffer to hand the kernel
-    kept_at_least(device.context, kept, sizeof(std::uint32_t));
+    kept_at_least(device, kept, sizeof(std::uint32_t));
   return near;
 }
 
@@ -83,7 +83,7 @@ const cl::Buffer& mark_cells_read(compute::OpenCLContext& device, cl::Kernel& k,
                                   std::span<const std::uint32_t> receivers, const cl_float4& origin,
                                   const cl_float4& cell, const cl_int4& dims, bool periodic, KeptBuffer& read_kept) {
   const std::size_t cells = std::size_t(dims.s[0]) * dims.s[1] * dims.s[2];
-  const cl::Buffer& read = kept_at_least(device.context, read_kept, cells);
+  const cl::Buffer& read = kept_at_least(device, read_kept, cells);
   device.queue.enqueueFillBuffer(read, cl_uchar(0), 0, cells);
   // The indices go as they are (unsigned, read as int: solve_culled has checked that the balls are fewer than 2^31).
   const cl::Buffer receiver_buffer = read_only(device.context, receivers);
@@ -117,10 +117,10 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // the sweep writes every entry of its own layout again and the layout by cell every entry of its own (below), and
   // what a lookup reads past a row's end goes only into lanes left unused. On a CPU device a fresh buffer's pages
   // are each touched for the first time by the kernel that writes them: a seventh of the far field's time at 10^5
-  // balls (docs/performance.md "Both layouts of the far field kept"). An eighth to spare spares a growing
-  // canopy a new buffer every year, within the cap.
+  // balls (docs/performance.md "Both layouts of the far field kept"). The room kept_at_least spares (within the
+  // cap) spares a growing canopy a new buffer every year.
   const std::size_t overread_bytes = sweep_overread_floats * sizeof(float);
-  const cl::Buffer& depth = kept_at_least(context, swept_kept, cells * patch_count * sizeof(float) + overread_bytes,
+  const cl::Buffer& depth = kept_at_least(device, swept_kept, cells * patch_count * sizeof(float) + overread_bytes,
                                           table_cap_bytes + overread_bytes);
   const std::size_t runs = (std::size_t(far.grid().dims.x) + 7) / 8;  // eight columns of a row a work item
   const std::size_t column_items = runs * far.grid().dims.y;
@@ -144,7 +144,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   const std::size_t row = far_row(patch_count);
   // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
   // "The far-field table kept from one solve to the next").
-  const cl::Buffer& table = kept_at_least(context, table_kept, cells * row * sizeof(float), table_cap_bytes);
+  const cl::Buffer& table = kept_at_least(device, table_kept, cells * row * sizeof(float), table_cap_bytes);
   by_cell.setArg(0, depth);
   by_cell.setArg(1, read);
   by_cell.setArg(2, table);
@@ -596,9 +596,9 @@ OpenCLLightSolver::TileScan OpenCLLightSolver::tile_scan_on_device(const DeviceS
   if (4 * entry_stride > std::size_t(std::numeric_limits<cl_int>::max()))  // the kernels index them with int
     throw std::runtime_error("the light's near-field tile lists hold " + std::to_string(near.entry_count()) +
                              " entries, more than the OpenCL kernels can index; use a shorter [light] cutoff_m");
-  const auto& context = device_->cl.context;
-  const cl::Buffer& entries = kept_at_least(context, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
-  const cl::Buffer& tags = kept_at_least(context, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
+  const cl::Buffer& entries =
+      kept_at_least(device_->cl, device_->tile_entries_by_axis, 4 * entry_stride * sizeof(float));
+  const cl::Buffer& tags = kept_at_least(device_->cl, device_->tile_entry_tags, entry_stride * sizeof(cl_int));
   // The indices as the search wrote them (unsigned, read as int by the kernel: the balls are fewer than 2^31, checked
   // by solve_culled), in the buffer tile_lists_on_device wrote them to.
   const cl::Buffer& occluders = device_->tile_lists.buffer;

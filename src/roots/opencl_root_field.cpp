@@ -45,7 +45,7 @@ cl_float4 to_float4(const glm::dvec3& v, double w = 0.0) {
 // `data` into `kept` (grown when too small; OpenCL forbids zero-sized buffers, so it holds at least one element).
 template <class T>
 void kept_holding(compute::OpenCLContext& cl, KeptBuffer& kept, const std::vector<T>& data) {
-  const cl::Buffer& buffer = kept_at_least(cl.context, kept, sizeof(T) * std::max<std::size_t>(data.size(), 1));
+  const cl::Buffer& buffer = kept_at_least(cl, kept, sizeof(T) * std::max<std::size_t>(data.size(), 1));
   if (!data.empty()) cl.queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, sizeof(T) * data.size(), data.data());
 }
 
@@ -61,9 +61,9 @@ constexpr std::size_t items_per_block = std::size_t{1} << 12;
 void segments_on_device(compute::OpenCLContext& cl, const SegmentList& segments, const SegmentGrid& grid,
                         const glm::dvec3& frame, KeptBuffer& middle, KeptBuffer& start, KeptBuffer& end) {
   const std::size_t bytes = sizeof(cl_float4) * std::max<std::size_t>(segments.size(), 1);
-  const cl::Buffer& middles = kept_at_least(cl.context, middle, bytes);
-  const cl::Buffer& starts = kept_at_least(cl.context, start, bytes);
-  const cl::Buffer& ends = kept_at_least(cl.context, end, bytes);
+  const cl::Buffer& middles = kept_at_least(cl, middle, bytes);
+  const cl::Buffer& starts = kept_at_least(cl, start, bytes);
+  const cl::Buffer& ends = kept_at_least(cl, end, bytes);
   for (std::size_t first = 0; first < segments.size(); first += segments_per_upload) {
     const std::size_t count_here = std::min(segments.size() - first, segments_per_upload);
     const std::size_t offset = sizeof(cl_float4) * first, length = sizeof(cl_float4) * count_here;
@@ -179,10 +179,9 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTi
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tip_cell[a] < tip_cell[b]; });
   const auto per_tip = static_cast<std::size_t>(s.has_soil ? std::max(probes_per_tip, 0) : 0);
   const std::size_t tip_count = tips.size(), probe_count = std::max<std::size_t>(tip_count * per_tip, 1);
-  const cl::Context& context = s.cl.context;
-  const cl::Buffer& tip_buffer = kept_at_least(context, s.tips, sizeof(cl_float4) * tip_count);
-  const cl::Buffer& excluded_buffer = kept_at_least(context, s.excluded, sizeof(cl_int2) * tip_count);
-  const cl::Buffer& probe_buffer = kept_at_least(context, s.probes, sizeof(cl_float4) * probe_count);
+  const cl::Buffer& tip_buffer = kept_at_least(s.cl, s.tips, sizeof(cl_float4) * tip_count);
+  const cl::Buffer& excluded_buffer = kept_at_least(s.cl, s.excluded, sizeof(cl_int2) * tip_count);
+  const cl::Buffer& probe_buffer = kept_at_least(s.cl, s.probes, sizeof(cl_float4) * probe_count);
   {
     // The apices and probes written where the kernel reads them (mapped), in cell order.
     MappedForWriting tips_here(s.cl.queue, tip_buffer, sizeof(cl_float4) * tip_count),
@@ -209,8 +208,8 @@ std::vector<RootFieldSample> OpenCLRootFieldSolver::query(std::span<const RootTi
   s.kernel.setArg(11, static_cast<cl_int>(tip_count));
   s.kernel.setArg(12, probe_buffer);
   s.kernel.setArg(13, static_cast<cl_int>(per_tip));
-  s.kernel.setArg(19, kept_at_least(context, s.contact_out, sizeof(cl_float4) * tip_count));
-  s.kernel.setArg(20, kept_at_least(context, s.moisture_out, sizeof(cl_float4) * tip_count));
+  s.kernel.setArg(19, kept_at_least(s.cl, s.contact_out, sizeof(cl_float4) * tip_count));
+  s.kernel.setArg(20, kept_at_least(s.cl, s.moisture_out, sizeof(cl_float4) * tip_count));
   compute::launch(s.cl, s.kernel, tip_count);
 
   std::vector<cl_float4> contacts(tip_count), pulls(tip_count);
