@@ -15,6 +15,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/json_text.hpp"
+#include "core/page_settings.hpp"
 #include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "core/usable_memory.hpp"
@@ -266,6 +267,7 @@ std::string run_light_benchmark(const LightBenchmarkOptions& options, const std:
   json["seed"] = options.seed;
   json["hardware_threads"] = std::thread::hardware_concurrency();
   json["processor"] = processor_json(this_processor());
+  json["pages"] = page_settings_json(this_process_page_settings());  // the allocator's settings the seconds are of
   json["parameters"] = parameters_json(options.parameters);
   json["limits"] = {{"reference_exact_max", options.reference_exact_max},
                     {"reference_culled_max", options.reference_culled_max},

@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/json_text.hpp"
+#include "core/page_settings.hpp"
 #include "core/processor.hpp"
 #include "run/simulation.hpp"
 #include "scenario/scenario.hpp"
@@ -88,6 +89,7 @@ nlohmann::ordered_json report(const Scenario& scenario, const SimulationSummary&
   json["device"] = run.device;
   json["hardware_threads"] = std::thread::hardware_concurrency();  // the cores stage_cpu_seconds can fill
   json["processor"] = processor_json(this_processor());  // the machine the seconds are of
+  json["pages"] = page_settings_json(this_process_page_settings());  // and the allocator's settings
   json["seed"] = scenario.run.seed;
   json["vtk_output"] = false;
   json["years"] = run.last_stand_age - run.first_stand_age;

@@ -1,6 +1,7 @@
 // Both benchmarks' JSON, and a run's run.json, name the machine their seconds are of: the hardware threads and the
 // processor (model name, CPU family and model, vector extensions), so figures from two machines that lscpu calls
-// alike are not compared.
+// alike are not compared. The benchmarks also name the allocator's settings (GLIBC_TUNABLES, the kernel's
+// transparent-huge-page mode), which move one binary's hectare by a tenth on some machines.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
+#include "core/page_settings.hpp"
 #include "core/processor.hpp"
 
 namespace heliostand::testing {
@@ -22,6 +24,11 @@ void expect_this_machine(const nlohmann::json& json) {
   EXPECT_FALSE(json.at("processor").at("vector_extensions").empty()) << json.at("processor").dump();
 }
 
+// The settings the benchmark ran under: the child inherits this process's environment.
+void expect_these_page_settings(const nlohmann::json& json) {
+  EXPECT_EQ(json.at("pages"), nlohmann::json(page_settings_json(this_process_page_settings())));
+}
+
 }  // namespace
 
 TEST(BenchMachineCli, TheLightBenchmarkNamesThisProcessor) {
@@ -31,6 +38,19 @@ TEST(BenchMachineCli, TheLightBenchmarkNamesThisProcessor) {
   const CliResult cli = run_cli(quick_reference_light_bench + " -q -o " + file.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   expect_this_machine(nlohmann::json::parse(read_text(file)));
+  expect_these_page_settings(nlohmann::json::parse(read_text(file)));
+}
+
+// A variable set for the benchmark alone is the one it records (glibc reads it at the start; so does the JSON).
+TEST(BenchMachineCli, TheLightBenchmarkRecordsTheGlibcTunablesItRanWith) {
+  const fs::path folder = scratch_folder("bench-machine-tunables");
+  fs::create_directories(folder);
+  const fs::path file = folder / "light.json";
+  const std::string tunables = "glibc.malloc.hugetlb=1";
+  const CliResult cli = run_command("GLIBC_TUNABLES=" + tunables + " " + heliostand_command() + " " +
+                                    quick_reference_light_bench + " -q -o " + file.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  EXPECT_EQ(nlohmann::json::parse(read_text(file)).at("pages").at("glibc_tunables"), tunables);
 }
 
 TEST(BenchMachineCli, TheStandBenchmarkNamesThisProcessor) {
@@ -41,6 +61,7 @@ TEST(BenchMachineCli, TheStandBenchmarkNamesThisProcessor) {
                                 " --years 1 --device reference -q -o " + file.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   expect_this_machine(nlohmann::json::parse(read_text(file)));
+  expect_these_page_settings(nlohmann::json::parse(read_text(file)));
 }
 
 // run.json names the machine of the session that finished the run (docs/formats.md "run.json").
