@@ -11,7 +11,7 @@
 namespace heliostand {
 namespace {
 
-nlohmann::ordered_json optional_json(const std::optional<std::string>& value) {
+nlohmann::ordered_json setting_or_null(const std::optional<std::string>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json();
 }
 
@@ -37,8 +37,8 @@ PageSettings this_process_page_settings() {
 
 nlohmann::ordered_json page_settings_json(const PageSettings& settings) {
   nlohmann::ordered_json json;
-  json["glibc_tunables"] = optional_json(settings.glibc_tunables);
-  json["transparent_huge_pages"] = optional_json(settings.transparent_huge_pages);
+  json["glibc_tunables"] = setting_or_null(settings.glibc_tunables);
+  json["transparent_huge_pages"] = setting_or_null(settings.transparent_huge_pages);
   return json;
 }
 
