@@ -3,25 +3,16 @@
 #include <cstdlib>
 #include <fstream>
 #include <istream>
-#include <iterator>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_or_null.hpp"
+
 namespace heliostand {
-namespace {
-
-nlohmann::ordered_json setting_or_null(const std::optional<std::string>& value) {
-  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json();
-}
-
-}  // namespace
 
 std::optional<std::string> chosen_transparent_huge_pages(std::istream& enabled) {
-  const std::string text{std::istreambuf_iterator<char>(enabled), {}};
-  std::istringstream words(text);
   std::string word;
-  while (words >> word)
+  while (enabled >> word)
     if (word.size() > 2 && word.front() == '[' && word.back() == ']') return word.substr(1, word.size() - 2);
   return std::nullopt;
 }
@@ -37,8 +28,8 @@ PageSettings this_process_page_settings() {
 
 nlohmann::ordered_json page_settings_json(const PageSettings& settings) {
   nlohmann::ordered_json json;
-  json["glibc_tunables"] = setting_or_null(settings.glibc_tunables);
-  json["transparent_huge_pages"] = setting_or_null(settings.transparent_huge_pages);
+  json["glibc_tunables"] = json_or_null(settings.glibc_tunables);
+  json["transparent_huge_pages"] = json_or_null(settings.transparent_huge_pages);
   return json;
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_or_null.hpp"
 #include "core/trim_blanks.hpp"
 
 namespace heliostand {
@@ -33,10 +34,6 @@ std::vector<std::string> vector_extensions(std::string_view flags) {
   for (const char* extension : known_vector_extensions)
     if (std::find(all.begin(), all.end(), extension) != all.end()) present.emplace_back(extension);
   return present;
-}
-
-nlohmann::ordered_json optional_json(const std::optional<int>& value) {
-  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json();
 }
 
 }  // namespace
@@ -75,8 +72,8 @@ nlohmann::ordered_json processor_json(const Processor& processor) {
   nlohmann::ordered_json json;
   json["model_name"] =
       processor.model_name.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(processor.model_name);
-  json["cpu_family"] = optional_json(processor.family);
-  json["model"] = optional_json(processor.model);
+  json["cpu_family"] = json_or_null(processor.family);
+  json["model"] = json_or_null(processor.model);
   json["vector_extensions"] = processor.vector_extensions;
   return json;
 }
