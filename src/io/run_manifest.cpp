@@ -22,7 +22,8 @@ std::string to_json(const RunManifest& manifest) {
   json["started_utc"] = manifest.started_utc;
   json["finished_utc"] = manifest.finished_utc;
   json["finished_on"] = {{"hardware_threads", manifest.finished_on_hardware_threads},
-                         {"processor", processor_json(manifest.finished_on_processor)}};
+                         {"processor", processor_json(manifest.finished_on_processor)},
+                         {"pages", page_settings_json(manifest.finished_on_pages)}};
   json["first_stand_age"] = manifest.first_stand_age;
   json["last_stand_age"] = manifest.last_stand_age;
   json["wall_seconds"] = manifest.wall_seconds;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/page_settings.hpp"
 #include "core/processor.hpp"
 
 namespace heliostand {
@@ -24,6 +25,7 @@ struct RunManifest {
   // earlier sessions may have run on another one: their seconds are in wall_seconds, their machines not recorded.
   unsigned finished_on_hardware_threads = 0;
   Processor finished_on_processor;
+  PageSettings finished_on_pages;  // the allocator's settings, which move a long run's seconds by up to a tenth
   int first_stand_age = 0;
   int last_stand_age = 0;
   double wall_seconds = 0;

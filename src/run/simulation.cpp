@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "compute/compute_backend.hpp"
+#include "core/page_settings.hpp"
 #include "core/processor.hpp"
 #include "core/seconds_since.hpp"
 #include "io/checkpoint_state.hpp"
@@ -193,6 +194,7 @@ RunManifest run_manifest(const Scenario& scenario, const std::string& device, co
   manifest.finished_utc = utc_now_iso8601();
   manifest.finished_on_hardware_threads = std::thread::hardware_concurrency();
   manifest.finished_on_processor = this_processor();
+  manifest.finished_on_pages = this_process_page_settings();
   return manifest;
 }
 

@@ -1,7 +1,7 @@
 // Both benchmarks' JSON, and a run's run.json, name the machine their seconds are of: the hardware threads and the
 // processor (model name, CPU family and model, vector extensions), so figures from two machines that lscpu calls
-// alike are not compared. The benchmarks also name the allocator's settings (GLIBC_TUNABLES, the kernel's
-// transparent-huge-page mode), which move one binary's hectare by a tenth on some machines.
+// alike are not compared, and the allocator's settings (GLIBC_TUNABLES, the kernel's transparent-huge-page mode),
+// which move one binary's hectare by a tenth on some machines.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -70,7 +70,21 @@ TEST(BenchMachineCli, TheRunManifestNamesTheMachineThatFinishedTheRun) {
   const CliResult cli =
       run_cli("grow " + tiny_bench_stand.string() + " --years 1 --device reference -q --out " + folder.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
-  expect_this_machine(nlohmann::json::parse(read_text(folder / "run.json")).at("finished_on"));
+  const nlohmann::json finished_on = nlohmann::json::parse(read_text(folder / "run.json")).at("finished_on");
+  expect_this_machine(finished_on);
+  expect_these_page_settings(finished_on);
+}
+
+// A grow run with the variable docs/user-guide.md suggests for long runs records it beside its seconds.
+TEST(BenchMachineCli, TheRunManifestRecordsTheGlibcTunablesTheRunFinishedWith) {
+  const fs::path folder = scratch_folder("bench-machine-grow-tunables");
+  const std::string tunables = "glibc.malloc.hugetlb=1";
+  const CliResult cli = run_command("GLIBC_TUNABLES=" + tunables + " " + heliostand_command() + " grow " +
+                                    tiny_bench_stand.string() + " --years 1 --device reference -q --out " +
+                                    folder.string());
+  ASSERT_EQ(cli.status, 0) << cli.output;
+  EXPECT_EQ(nlohmann::json::parse(read_text(folder / "run.json")).at("finished_on").at("pages").at("glibc_tunables"),
+            tunables);
 }
 
 }  // namespace heliostand::testing

@@ -44,6 +44,7 @@ RunManifest example_manifest() {
   m.stage_seconds = {{"grow", 0.5}, {"light", 0.75}};
   m.finished_on_hardware_threads = 2;
   m.finished_on_processor = {"AMD EPYC", 26, 2, {"avx2", "avx512f"}};
+  m.finished_on_pages = {"glibc.malloc.hugetlb=1", std::nullopt};
   return m;
 }
 
@@ -107,7 +108,8 @@ TEST_F(StandOutputRun, WritesTheTablesTheVtkSeriesAndRunJsonLast) {
   EXPECT_EQ(json["command_line"], "heliostand grow stands/tiny.toml --out \"run 1\"");
   EXPECT_EQ(json["stage_seconds"]["light"], 0.75);
   EXPECT_EQ(json["finished_on"], nlohmann::json::parse(R"({"hardware_threads": 2, "processor": {"model_name":
-      "AMD EPYC", "cpu_family": 26, "model": 2, "vector_extensions": ["avx2", "avx512f"]}})"));
+      "AMD EPYC", "cpu_family": 26, "model": 2, "vector_extensions": ["avx2", "avx512f"]}, "pages": {"glibc_tunables":
+      "glibc.malloc.hugetlb=1", "transparent_huge_pages": null}})"));
   const auto files = json["output_files"].get<std::vector<std::string>>();
   for (const char* expected : {"stand.pvd", "stand/stand_age_0010.vtm", "stand/stand_age_0015.vtm",
                                "stand_table.csv", "trees.csv", "events.csv", "run.json"}) {
