@@ -29,6 +29,11 @@ void expect_these_page_settings(const nlohmann::json& json) {
   EXPECT_EQ(json.at("pages"), nlohmann::json(page_settings_json(this_process_page_settings())));
 }
 
+// heliostand with GLIBC_TUNABLES set for its run alone (glibc reads it when the process starts).
+CliResult run_cli_with_tunables(const std::string& tunables, const std::string& arguments) {
+  return run_command("GLIBC_TUNABLES=" + tunables + " " + heliostand_command() + " " + arguments);
+}
+
 }  // namespace
 
 TEST(BenchMachineCli, TheLightBenchmarkNamesThisProcessor) {
@@ -47,8 +52,7 @@ TEST(BenchMachineCli, TheLightBenchmarkRecordsTheGlibcTunablesItRanWith) {
   fs::create_directories(folder);
   const fs::path file = folder / "light.json";
   const std::string tunables = "glibc.malloc.hugetlb=1";
-  const CliResult cli = run_command("GLIBC_TUNABLES=" + tunables + " " + heliostand_command() + " " +
-                                    quick_reference_light_bench + " -q -o " + file.string());
+  const CliResult cli = run_cli_with_tunables(tunables, quick_reference_light_bench + " -q -o " + file.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   EXPECT_EQ(nlohmann::json::parse(read_text(file)).at("pages").at("glibc_tunables"), tunables);
 }
@@ -79,9 +83,8 @@ TEST(BenchMachineCli, TheRunManifestNamesTheMachineThatFinishedTheRun) {
 TEST(BenchMachineCli, TheRunManifestRecordsTheGlibcTunablesTheRunFinishedWith) {
   const fs::path folder = scratch_folder("bench-machine-grow-tunables");
   const std::string tunables = "glibc.malloc.hugetlb=1";
-  const CliResult cli = run_command("GLIBC_TUNABLES=" + tunables + " " + heliostand_command() + " grow " +
-                                    tiny_bench_stand.string() + " --years 1 --device reference -q --out " +
-                                    folder.string());
+  const CliResult cli = run_cli_with_tunables(
+      tunables, "grow " + tiny_bench_stand.string() + " --years 1 --device reference -q --out " + folder.string());
   ASSERT_EQ(cli.status, 0) << cli.output;
   EXPECT_EQ(nlohmann::json::parse(read_text(folder / "run.json")).at("finished_on").at("pages").at("glibc_tunables"),
             tunables);
