@@ -1,10 +1,11 @@
 // The far field's optical-depth table swept on the device, layer by layer against the light: the same sweep as
-// FarField::sweep (src/light/far_field.cpp), in float. One launch per layer step; work item (a run of eight
+// FarField::sweep (src/light/far_field.cpp), in float. One launch per layer step and chunk; work item (a run of eight
 // columns of one row, patch), the columns in SIMD lanes (voxel_grid.clh): every column computes what it would
-// alone. Table layout [patch][z][y][x]; the density (sigma, 1/m) [z][y][x] with `margin` cells around the x and y
-// sides (src/light/far_field_margin.hpp). far_field_by_cell then lays the table out by cell for the culled light
-// kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option made by the host, is the
-// patch count rounded up to eight; the padding holds zeros), only for the cells a receiver reads.
+// alone. The host sweeps a chunk of patches at a time (src/light/far_field_buffers.hpp, sweep_chunk): table layout
+// [patch of the chunk][z][y][x], from `first_patch` on; the density (sigma, 1/m) [z][y][x] with `margin` cells around
+// the x and y sides (src/light/far_field_margin.hpp). far_field_by_cell then lays each chunk out by cell for the
+// culled light kernel: [z][y][x][FAR_ROW], a row of every patch per cell (FAR_ROW, a build option made by the host,
+// is the patch count rounded up to eight; the padding holds zeros), only for the cells a receiver reads.
 #include "voxel_grid.clh"
 
 // Midpoint rule along `direction` from `start` metres beyond each lane's cell centre, at least one sample per cell
@@ -36,19 +37,19 @@ __attribute__((always_inline)) inline float8 far_field_march8(__global const flo
 __kernel void far_field_layer(__global const float* density, const int margin, __global float* depth,
                               __global const float4* patches, const float4 grid_cell, const int4 grid_dims,
                               const int periodic, const int layer_step, const float max_path, const float saturated,
-                              const float start) {
+                              const float start, const int first_patch) {
   const int runs = (grid_dims.x + 7) / 8;  // runs of eight columns a row
   const int y = get_global_id(0) / runs;
   if (y >= grid_dims.y) return;
   const int x0 = (get_global_id(0) - y * runs) * 8;
   const int lanes = min(8, grid_dims.x - x0);
-  const int patch = get_global_id(1);
+  const int patch = first_patch + get_global_id(1);
   const float3 cell = grid_cell.xyz;
   const float3 direction = patches[patch].xyz;
   const int step_z = direction.z > 0.0f ? 1 : -1;  // band centres never lie on the horizon (even V)
   const int z = direction.z > 0.0f ? grid_dims.z - 1 - layer_step : layer_step;
   const size_t cells = (size_t)grid_dims.x * grid_dims.y * grid_dims.z;
-  __global float* table = depth + (size_t)patch * cells;
+  __global float* table = depth + (size_t)get_global_id(1) * cells;  // the patch's place in this chunk
   // the cell's own part of the path begins `start` metres out (FarField::start_distance)
   const int next = z + step_z;
   float8 tau;
@@ -95,15 +96,16 @@ __kernel void far_field_mark_read(__global const float4* balls, __global const i
       }
 }
 
-// The swept table [patch][cell] laid out by cell, [cell][FAR_ROW], for the cells marked read
-// (far_field_mark_read); the others keep whatever they held: work item (eight cells from 8 * get_global_id(0),
-// eight patches from 8 * get_global_id(1)).
+// A chunk of the swept table, [patch - chunk_first_patch][cell], laid out by cell, [cell][FAR_ROW], for the cells
+// marked read (far_field_mark_read); the others keep whatever they held: work item (eight cells from
+// 8 * get_global_id(0), eight patches from chunk_first_patch + 8 * get_global_id(1)).
 __kernel void far_field_by_cell(__global const float* depth, __global const uchar* read, __global float* by_cell,
-                                const int cells) {
-  const int first_cell = get_global_id(0) * 8, first_patch = get_global_id(1) * 8;
+                                const int cells, const int chunk_first_patch) {
+  const int first_cell = get_global_id(0) * 8, first_patch = chunk_first_patch + get_global_id(1) * 8;
   for (int c = first_cell; c < min(first_cell + 8, cells); ++c) {
     if (!read[c]) continue;
     for (int p = first_patch; p < first_patch + 8; ++p)
-      by_cell[(size_t)c * FAR_ROW + p] = p < SKY_BANDS * SKY_SECTORS ? depth[(size_t)p * cells + c] : 0.0f;
+      by_cell[(size_t)c * FAR_ROW + p] =
+          p < SKY_BANDS * SKY_SECTORS ? depth[(size_t)(p - chunk_first_patch) * cells + c] : 0.0f;
   }
 }

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double bytes_per_mb = 1e6;  // far_field_table_mb's unit
 constexpr double default_cap_mb = LightParameters{}.far_field_table_mb;
-constexpr double table_layouts = 2;  // the sweep's and the culled kernel's (opencl_light_solver.cpp)
+constexpr double table_layouts = 2;  // the estimates' bound: the sweep's and the culled kernel's, each at the cap
 constexpr std::uint64_t overread_bytes = sweep_overread_floats * sizeof(float);
 
 // A device's figure in MB, rounded down: the cap a user may take from the message must fit.
@@ -22,20 +22,27 @@ double megabytes_down(std::uint64_t bytes) { return std::floor(double(bytes) / (
 
 std::size_t patch_count(const LightParameters& p) { return std::size_t(p.sky_bands) * std::size_t(p.sky_sectors); }
 
-// Both layouts at `cap_mb` on `memory`: the swept one (the larger, by its over-read) within one buffer, the two
-// together within the device's memory.
+// The sweep's layout for a table by cell of `layout` bytes: a chunk's rows, and the over-read.
+std::uint64_t swept_bytes(const LightParameters& p, std::uint64_t layout) {
+  return layout / far_row(patch_count(p)) * sweep_chunk(patch_count(p)) + overread_bytes;
+}
+
+// Both layouts at `cap_mb` on `memory`: each within one buffer, the two together within the device's memory.
 bool layouts_fit(const LightParameters& p, double cap_mb, const compute::DeviceMemory& memory) {
   LightParameters at_cap = p;
   at_cap.far_field_table_mb = cap_mb;
   const std::uint64_t layout = far_table_cap_bytes(at_cap, patch_count(p));
-  return layout + overread_bytes <= memory.buffer_bytes && 2 * layout + overread_bytes <= memory.total_bytes;
+  const std::uint64_t swept = swept_bytes(p, layout);
+  return std::max(layout, swept) <= memory.buffer_bytes && layout + swept <= memory.total_bytes;
 }
 
 // The largest whole number of MB whose layouts fit; 0 when not even 1 MB does.
 double largest_cap_mb(const LightParameters& p, const compute::DeviceMemory& memory) {
-  const std::uint64_t room = std::min(memory.buffer_bytes, memory.total_bytes / 2);
-  const double padding = double(far_row(patch_count(p))) / double(patch_count(p));  // bytes of layout a byte of cap
-  double cap = std::floor(double(room) / padding / bytes_per_mb);
+  const double row = double(far_row(patch_count(p)));
+  const double both = 1 + double(sweep_chunk(patch_count(p))) / row;  // bytes of the two layouts a byte of the table's
+  const double room = std::min(double(memory.buffer_bytes), double(memory.total_bytes) / both);
+  const double padding = row / double(patch_count(p));  // bytes of layout a byte of cap
+  double cap = std::floor(room / padding / bytes_per_mb);
   while (cap >= 1 && !layouts_fit(p, cap, memory)) cap -= 1;  // the over-read and rounding, a step or two at most
   return std::max(cap, 0.0);
 }
@@ -43,6 +50,8 @@ double largest_cap_mb(const LightParameters& p, const compute::DeviceMemory& mem
 }  // namespace
 
 std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8; }
+
+std::size_t sweep_chunk(std::size_t patch_count) { return std::min(sweep_chunk_patches, far_row(patch_count)); }
 
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count) {
   return std::size_t(far_field_table_budget_cells(p, patch_count) * double(far_row(patch_count)) * sizeof(float));
@@ -57,12 +66,12 @@ std::optional<std::string> far_field_beyond_device(const LightParameters& p, con
                                  "larger one gets coarser cells), or choose another device",
                                  largest)
                    : std::string("choose another device");
-  return fmt::format("a far-field table of up to {} MB takes two buffers of up to {:.1f} MB each on the device '{}', "
-                     "which holds at most {:.1f} MB a buffer and {:.1f} MB in all (CL_DEVICE_MAX_MEM_ALLOC_SIZE, "
-                     "CL_DEVICE_GLOBAL_MEM_SIZE): {} (--device, `heliostand devices`)",
-                     p.far_field_table_mb,
-                     double(far_table_cap_bytes(p, patch_count(p)) + overread_bytes) / bytes_per_mb, device_name,
-                     megabytes_down(memory.buffer_bytes), megabytes_down(memory.total_bytes), advice);
+  const std::uint64_t layout = far_table_cap_bytes(p, patch_count(p));
+  return fmt::format("a far-field table of up to {} MB takes a buffer of up to {:.1f} MB and the sweep's of up to "
+                     "{:.1f} MB on the device '{}', which holds at most {:.1f} MB a buffer and {:.1f} MB in all "
+                     "(CL_DEVICE_MAX_MEM_ALLOC_SIZE, CL_DEVICE_GLOBAL_MEM_SIZE): {} (--device, `heliostand devices`)",
+                     p.far_field_table_mb, double(layout) / bytes_per_mb, double(swept_bytes(p, layout)) / bytes_per_mb,
+                     device_name, megabytes_down(memory.buffer_bytes), megabytes_down(memory.total_bytes), advice);
 }
 
 double far_field_table_bytes_beyond_default(const LightParameters& p) {

@@ -23,8 +23,17 @@ std::size_t far_row(std::size_t patch_count);
 // the density's and the swept table's buffers hold that much more.
 inline constexpr std::size_t sweep_overread_floats = 16;
 
+// The sweep fills its own layout a chunk of this many patches at a time and lays each chunk out by cell before the
+// next (opencl_light_solver.cpp), so its layout holds one chunk: a quarter of the default 512-patch sky's table. A
+// first solve touches that much less fresh memory (docs/performance.md "The far field swept a chunk of patches at a
+// time"). A multiple of eight, as the rows are.
+inline constexpr std::size_t sweep_chunk_patches = 128;
+
+// The patches of a chunk for a sky of `patch_count` patches: sweep_chunk_patches, or the whole row when it is shorter.
+std::size_t sweep_chunk(std::size_t patch_count);
+
 // The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding. The swept
-// layout takes at most that and its over-read.
+// layout takes a chunk's share of that (sweep_chunk out of far_row) and its over-read.
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count);
 
 // Why a device named `device_name` with `memory` cannot hold both layouts at p.far_field_table_mb, with the largest
@@ -33,9 +42,10 @@ std::optional<std::string> far_field_beyond_device(const LightParameters& p, con
                                                    const std::string& device_name);
 
 // The memory the table may take beyond its default cap, which the fixed share of a run's memory estimate and of the
-// light benchmark's already holds (stand/memory_estimate.hpp, light/light_benchmark.hpp): the OpenCL solver's two
-// layouts, each up to the cap, so twice the cap above the default; 0 at or below it, and for the exact light, which
-// has no far field. An upper bound: a stand whose table stays below the cap takes less.
+// light benchmark's already holds (stand/memory_estimate.hpp, light/light_benchmark.hpp): twice the cap above the
+// default, as when the sweep's layout held every patch; 0 at or below it, and for the exact light, which has no far
+// field. An upper bound: the sweep's layout now holds a chunk's share of the table, and a stand whose table stays
+// below the cap takes less.
 double far_field_table_bytes_beyond_default(const LightParameters& p);
 
 // That term of the estimates' formulas in words: "twice the far-field table's cap above 512 MB".

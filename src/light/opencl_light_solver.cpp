@@ -114,14 +114,19 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   const cl::Buffer density_buffer = read_only(context, density);
   const std::size_t cells = far.grid().cell_count();
   // Both of the table's layouts are kept from one solve to the next, each replaced only when the table outgrows it:
-  // the sweep writes every entry of its own layout again and the layout by cell every entry of its own (below), and
+  // the sweep writes every entry of its chunk again and the layout by cell every entry of its own (below), and
   // what a lookup reads past a row's end goes only into lanes left unused. On a CPU device a fresh buffer's pages
   // are each touched for the first time by the kernel that writes them: a seventh of the far field's time at 10^5
   // balls (docs/performance.md "Both layouts of the far field kept"). The room kept_at_least spares (within the
   // cap) spares a growing canopy a new buffer every year.
+  const std::size_t row = far_row(patch_count);
+  const std::size_t chunk = sweep_chunk(patch_count);
   const std::size_t overread_bytes = sweep_overread_floats * sizeof(float);
-  const cl::Buffer& depth = kept_at_least(device, swept_kept, cells * patch_count * sizeof(float) + overread_bytes,
-                                          table_cap_bytes + overread_bytes);
+  const cl::Buffer& depth = kept_at_least(device, swept_kept, cells * chunk * sizeof(float) + overread_bytes,
+                                          table_cap_bytes / row * chunk + overread_bytes);
+  // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
+  // "The far-field table kept from one solve to the next").
+  const cl::Buffer& table = kept_at_least(device, table_kept, cells * row * sizeof(float), table_cap_bytes);
   const std::size_t runs = (std::size_t(far.grid().dims.x) + 7) / 8;  // eight columns of a row a work item
   const std::size_t column_items = runs * far.grid().dims.y;
   int arg = 0;
@@ -136,20 +141,24 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   k.setArg(arg++, float(far.max_path_m()));
   k.setArg(arg++, float(far.saturated_hits()));
   k.setArg(arg++, float(far.start_distance()));
-  // Each layer reads the one swept before it: one launch per layer, in order on the in-order queue.
-  for (int layer = 0; layer < far.grid().dims.z; ++layer) {
-    k.setArg(layer_arg, cl_int(layer));
-    compute::launch(device, k, column_items, patch_count);
-  }
-  const std::size_t row = far_row(patch_count);
-  // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
-  // "The far-field table kept from one solve to the next").
-  const cl::Buffer& table = kept_at_least(device, table_kept, cells * row * sizeof(float), table_cap_bytes);
+  const int first_patch_arg = arg++;
   by_cell.setArg(0, depth);
   by_cell.setArg(1, read);
   by_cell.setArg(2, table);
   by_cell.setArg(3, cl_int(cells));
-  compute::launch(device, by_cell, (cells + 7) / 8, row / 8);
+  // A chunk of patches at a time, swept and laid out before the next, so the sweep's own layout holds one chunk (its
+  // first touch is what a first solve pays: docs/performance.md "The far field swept a chunk of patches at a time").
+  for (std::size_t first = 0; first < row; first += chunk) {
+    const std::size_t swept = std::min(chunk, patch_count - first);  // the rest of the row is padding
+    k.setArg(first_patch_arg, cl_int(first));
+    // Each layer reads the one swept before it: one launch per layer, in order on the in-order queue.
+    for (int layer = 0; layer < far.grid().dims.z; ++layer) {
+      k.setArg(layer_arg, cl_int(layer));
+      compute::launch(device, k, column_items, swept);
+    }
+    by_cell.setArg(4, cl_int(first));
+    compute::launch(device, by_cell, (cells + 7) / 8, std::min(chunk, row - first) / 8);
+  }
   device.queue.finish();
   return table;
 }

@@ -49,8 +49,9 @@ TEST(FarFieldBuffers, ACapBeyondOneBufferIsRefusedWithTheLargestThatFits) {
   EXPECT_EQ(far_field_beyond_device(culled_at_cap(4294), pocl_here, "pocl"), std::nullopt);  // 4 294 000 064 bytes
   const auto reason = far_field_beyond_device(culled_at_cap(6000), pocl_here, "pocl");
   ASSERT_TRUE(reason);
-  EXPECT_NE(reason->find("a far-field table of up to 6000 MB takes two buffers of up to 6000.0 MB each on the device "
-                         "'pocl', which holds at most 4294.9 MB a buffer and 11771.0 MB in all"),
+  EXPECT_NE(reason->find("a far-field table of up to 6000 MB takes a buffer of up to 6000.0 MB and the sweep's of up "
+                         "to 1500.0 MB on the device 'pocl', which holds at most 4294.9 MB a buffer and 11771.0 MB in "
+                         "all"),
             std::string::npos)
       << *reason;
   EXPECT_EQ(advised_cap(*reason), 4294) << *reason;
@@ -58,12 +59,23 @@ TEST(FarFieldBuffers, ACapBeyondOneBufferIsRefusedWithTheLargestThatFits) {
   EXPECT_TRUE(far_field_beyond_device(culled_at_cap(4295), pocl_here, "pocl"));
 }
 
+// The sweep's layout holds a chunk of 128 patches (a quarter of the default sky's row) beside the table by cell.
 TEST(FarFieldBuffers, BothLayoutsMustFitInTheDevicesMemory) {
   const compute::DeviceMemory wide_buffers{100 * gib_bytes, 8'000'000'000};  // one buffer may take it all; two may not
-  EXPECT_EQ(far_field_beyond_device(culled_at_cap(3999), wide_buffers, "gpu"), std::nullopt);
-  const auto reason = far_field_beyond_device(culled_at_cap(4500), wide_buffers, "gpu");
+  EXPECT_EQ(far_field_beyond_device(culled_at_cap(6399), wide_buffers, "gpu"), std::nullopt);
+  const auto reason = far_field_beyond_device(culled_at_cap(6500), wide_buffers, "gpu");
   ASSERT_TRUE(reason);
-  EXPECT_EQ(advised_cap(*reason), 3999) << *reason;  // 2 x 4 000 000 000 bytes and the over-read do not fit
+  // 6 400 000 000 bytes by cell, a quarter of that swept, and the over-read do not fit
+  EXPECT_EQ(advised_cap(*reason), 6399) << *reason;
+}
+
+// The sweep fills its layout a chunk of patches at a time: 128, or a whole row where the sky has fewer patches.
+TEST(FarFieldBuffers, TheSweepHoldsAChunkOfTheSkyAtATime) {
+  EXPECT_EQ(sweep_chunk(512), 128u);
+  EXPECT_EQ(sweep_chunk(130), 128u);  // a 10 x 13 sky: a chunk, then 2 patches and six padding entries
+  EXPECT_EQ(sweep_chunk(128), 128u);
+  EXPECT_EQ(sweep_chunk(30), 32u);  // a 6 x 5 sky: its row, padding included
+  EXPECT_EQ(sweep_chunk(2), 8u);
 }
 
 // Whatever the device and the sky, the advised cap fits and one MB more does not.

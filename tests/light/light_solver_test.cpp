@@ -314,12 +314,13 @@ void expect_far_field_matches_reference(const compute::ComputeBackend& device, c
 }
 
 // The culled kernel reads the far field eight patches at a time (cl/light.cl) and the sweep fills the table eight
-// columns at a time (cl/far_field.cl): skies whose patch count is not a multiple of eight (2 and 30 patches) and
-// grids of any column count must match the reference too, open and periodic.
+// columns at a time (cl/far_field.cl), a chunk of 128 patches at a time (light/far_field_buffers.hpp): skies whose
+// patch count is not a multiple of eight (2, 30 and 130 patches, the last a whole chunk and then one of 2 patches
+// and six padding entries) and grids of any column count must match the reference too, open and periodic.
 TEST(LightEightLanes, SkiesOfAnyPatchCountMatchTheReferenceInTheFarField) {
   const auto device = compute::opencl_backend_for_test();
   if (!device) GTEST_SKIP() << "no OpenCL device";
-  for (const auto& [bands, sectors] : {std::pair{2, 1}, std::pair{6, 5}, std::pair{4, 4}})
+  for (const auto& [bands, sectors] : {std::pair{2, 1}, std::pair{6, 5}, std::pair{4, 4}, std::pair{10, 13}})
     for (const bool periodic : {false, true}) {
       LightParameters p;
       p.exact = false;
