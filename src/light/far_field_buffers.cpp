@@ -15,24 +15,18 @@ namespace {
 constexpr double bytes_per_mb = 1e6;  // far_field_table_mb's unit
 constexpr double default_cap_mb = LightParameters{}.far_field_table_mb;
 constexpr double table_layouts = 2;  // the estimates' bound: the sweep's and the culled kernel's, each at the cap
-constexpr std::uint64_t overread_bytes = sweep_overread_floats * sizeof(float);
 
 // A device's figure in MB, rounded down: the cap a user may take from the message must fit.
 double megabytes_down(std::uint64_t bytes) { return std::floor(double(bytes) / (bytes_per_mb / 10)) / 10; }
 
 std::size_t patch_count(const LightParameters& p) { return std::size_t(p.sky_bands) * std::size_t(p.sky_sectors); }
 
-// The sweep's layout for a table by cell of `layout` bytes: a chunk's rows, and the over-read.
-std::uint64_t swept_bytes(const LightParameters& p, std::uint64_t layout) {
-  return layout / far_row(patch_count(p)) * sweep_chunk(patch_count(p)) + overread_bytes;
-}
-
 // Both layouts at `cap_mb` on `memory`: each within one buffer, the two together within the device's memory.
 bool layouts_fit(const LightParameters& p, double cap_mb, const compute::DeviceMemory& memory) {
   LightParameters at_cap = p;
   at_cap.far_field_table_mb = cap_mb;
   const std::uint64_t layout = far_table_cap_bytes(at_cap, patch_count(p));
-  const std::uint64_t swept = swept_bytes(p, layout);
+  const std::uint64_t swept = swept_layout_bytes(layout, patch_count(p));
   return std::max(layout, swept) <= memory.buffer_bytes && layout + swept <= memory.total_bytes;
 }
 
@@ -53,6 +47,10 @@ std::size_t far_row(std::size_t patch_count) { return (patch_count + 7) / 8 * 8;
 
 std::size_t sweep_chunk(std::size_t patch_count) { return std::min(sweep_chunk_patches, far_row(patch_count)); }
 
+std::size_t swept_layout_bytes(std::size_t table_bytes, std::size_t patch_count) {
+  return table_bytes / far_row(patch_count) * sweep_chunk(patch_count) + sweep_overread_floats * sizeof(float);
+}
+
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count) {
   return std::size_t(far_field_table_budget_cells(p, patch_count) * double(far_row(patch_count)) * sizeof(float));
 }
@@ -67,10 +65,11 @@ std::optional<std::string> far_field_beyond_device(const LightParameters& p, con
                                  largest)
                    : std::string("choose another device");
   const std::uint64_t layout = far_table_cap_bytes(p, patch_count(p));
+  const std::uint64_t swept = swept_layout_bytes(layout, patch_count(p));
   return fmt::format("a far-field table of up to {} MB takes a buffer of up to {:.1f} MB and the sweep's of up to "
                      "{:.1f} MB on the device '{}', which holds at most {:.1f} MB a buffer and {:.1f} MB in all "
                      "(CL_DEVICE_MAX_MEM_ALLOC_SIZE, CL_DEVICE_GLOBAL_MEM_SIZE): {} (--device, `heliostand devices`)",
-                     p.far_field_table_mb, double(layout) / bytes_per_mb, double(swept_bytes(p, layout)) / bytes_per_mb,
+                     p.far_field_table_mb, double(layout) / bytes_per_mb, double(swept) / bytes_per_mb,
                      device_name, megabytes_down(memory.buffer_bytes), megabytes_down(memory.total_bytes), advice);
 }
 

@@ -32,8 +32,12 @@ inline constexpr std::size_t sweep_chunk_patches = 128;
 // The patches of a chunk for a sky of `patch_count` patches: sweep_chunk_patches, or the whole row when it is shorter.
 std::size_t sweep_chunk(std::size_t patch_count);
 
-// The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding. The swept
-// layout takes a chunk's share of that (sweep_chunk out of far_row) and its over-read.
+// The sweep's layout for a table by cell of `table_bytes` bytes and a sky of `patch_count` patches: a chunk's share
+// of the table's rows (sweep_chunk out of far_row), and the over-read. The solver sizes its buffer and that buffer's
+// cap with it, and the device check counts the same bytes.
+std::size_t swept_layout_bytes(std::size_t table_bytes, std::size_t patch_count);
+
+// The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding.
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count);
 
 // Why a device named `device_name` with `memory` cannot hold both layouts at p.far_field_table_mb, with the largest

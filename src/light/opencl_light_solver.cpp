@@ -121,12 +121,12 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // cap) spares a growing canopy a new buffer every year.
   const std::size_t row = far_row(patch_count);
   const std::size_t chunk = sweep_chunk(patch_count);
-  const std::size_t overread_bytes = sweep_overread_floats * sizeof(float);
-  const cl::Buffer& depth = kept_at_least(device, swept_kept, cells * chunk * sizeof(float) + overread_bytes,
-                                          table_cap_bytes / row * chunk + overread_bytes);
+  const std::size_t table_bytes = cells * row * sizeof(float);
+  const cl::Buffer& depth = kept_at_least(device, swept_kept, swept_layout_bytes(table_bytes, patch_count),
+                                          swept_layout_bytes(table_cap_bytes, patch_count));
   // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
   // "The far-field table kept from one solve to the next").
-  const cl::Buffer& table = kept_at_least(device, table_kept, cells * row * sizeof(float), table_cap_bytes);
+  const cl::Buffer& table = kept_at_least(device, table_kept, table_bytes, table_cap_bytes);
   const std::size_t runs = (std::size_t(far.grid().dims.x) + 7) / 8;  // eight columns of a row a work item
   const std::size_t column_items = runs * far.grid().dims.y;
   int arg = 0;

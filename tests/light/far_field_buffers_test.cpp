@@ -76,6 +76,10 @@ TEST(FarFieldBuffers, TheSweepHoldsAChunkOfTheSkyAtATime) {
   EXPECT_EQ(sweep_chunk(128), 128u);
   EXPECT_EQ(sweep_chunk(30), 32u);  // a 6 x 5 sky: its row, padding included
   EXPECT_EQ(sweep_chunk(2), 8u);
+  // The sweep's layout: a chunk's share of the table's rows and the over-read of sweep_overread_floats floats.
+  EXPECT_EQ(swept_layout_bytes(512'000'000, 512), 128'000'064u);  // the default cap: a quarter
+  EXPECT_EQ(swept_layout_bytes(136 * 4 * 1000, 130), 128 * 4 * 1000 + 64u);  // 1000 cells of a 10 x 13 sky
+  EXPECT_EQ(swept_layout_bytes(32 * 4 * 10, 30), 32 * 4 * 10 + 64u);  // a 6 x 5 sky: the whole table
 }
 
 // Whatever the device and the sky, the advised cap fits and one MB more does not.
