@@ -1,9 +1,10 @@
 #pragma once
 // The far-field table's two buffers on an OpenCL device, and whether a device holds them. The OpenCL solver keeps the
-// table in two layouts, the sweep's and the culled kernel's (opencl_light_solver.cpp), each within the cap
-// `far_field_table_mb`. A device allocates no single buffer beyond its limit (PoCL on a 24 GiB machine here: 4 GiB),
-// so a cap above it failed at the table's first clCreateBuffer, after the stand was established and its tables
-// begun. The solver checks the cap when it is made instead, and says the largest cap the device holds.
+// table in two layouts (opencl_light_solver.cpp): the culled kernel's, by cell, within the cap `far_field_table_mb`,
+// and the sweep's, a chunk of patches' share of it (swept_layout_bytes). A device allocates no single buffer beyond
+// its limit (PoCL on a 24 GiB machine here: 4 GiB), so a cap above it failed at the table's first clCreateBuffer,
+// after the stand was established and its tables begun. The solver checks the cap when it is made instead, and says
+// the largest cap the device holds.
 #include <cstddef>
 #include <optional>
 #include <stdexcept>

@@ -9,7 +9,8 @@
 // the hectare, 2 500 trees grown to age 80, peaked at 4.3 GB: (4.3 GB − 1 GiB) / 2 500 ≈ 1.3 MiB, rounded up by a
 // third for older and bigger trees). Since the OpenCL solver keeps the table's second layout too (2026-11-28), the
 // hectare peaks at 4.8 GB, (4.8 GB − 1 GiB) / 2 500 ≈ 1.5 MiB a tree: still within the formula. A far-field table
-// allowed more than its default may take it, twice over (the OpenCL solver's two layouts of it): stands/tiny in
+// allowed more than its default may take it, twice over (the OpenCL solver's two layouts of it; an upper bound since
+// 2026-12-05, when the sweep's layout came to hold a chunk of patches' share of the table): stands/tiny in
 // 0.05 m cells peaked at 5.1 GiB under a 3 000 MB cap and at 1.0 GiB under 512 MB, 1.77 bytes a byte of the cap
 // (docs/performance.md "Memory"). It is meant to catch a survey ten times too large, or a cap no machine here holds,
 // not to budget tightly: a run is refused only when the estimate exceeds the memory it may use.
