@@ -6,6 +6,7 @@
 // written again costs no such faults. Included only by opencl_*.cpp files (the OpenCL backend is optional).
 #include <cstddef>
 #include <limits>
+#include <span>
 
 #include <CL/opencl.hpp>
 
@@ -17,13 +18,33 @@ namespace heliostand::compute {
 struct KeptBuffer {
   cl::Buffer buffer;
   std::size_t bytes = 0;
+  // On a CPU device, how far from its start its pages were made resident; for a use written in parts, how far its
+  // caller made those parts resident (0 again whenever the buffer is made anew).
+  std::size_t resident_bytes = 0;
 };
+
+// Whether kept_at_least makes the pages of a CPU device's buffer resident, up to the bytes asked: for a use that
+// writes all of them, or not, for one that writes only parts of them (the far field's table by cell, only the cells
+// a receiver reads), whose caller makes those parts resident (make_resident below) and leaves the rest unbacked.
+enum class Residency { whole_use, parts_by_the_caller };
 
 // `kept`, made anew only when `bytes` outgrow it, then with room to spare for a growing canopy or root system
 // (spare_bytes; never beyond `cap_bytes` nor the device's largest buffer, unless `bytes` themselves are). What it
-// held before is undefined after a regrowth.
+// held before is undefined after a regrowth. On a CPU device its first `bytes` are resident in the host's memory
+// when it is returned, given Residency::whole_use, and its spare room is not.
 const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, std::size_t bytes,
-                                std::size_t cap_bytes = std::numeric_limits<std::size_t>::max());
+                                std::size_t cap_bytes = std::numeric_limits<std::size_t>::max(),
+                                Residency residency = Residency::whole_use);
+
+// Bytes [first, end) of a buffer.
+struct ByteRange {
+  std::size_t first = 0, end = 0;
+};
+
+// On a CPU device, the host's pages under each of `ranges` of `buffer` made resident and writable, in one call a range
+// and with one mapping of the buffer for all of them, before a kernel writes them: what kept_at_least does for a whole
+// use (opencl_kept_buffer.cpp says why). Nothing on any other device, or where the system cannot.
+void make_resident(const OpenCLContext& device, const cl::Buffer& buffer, std::span<const ByteRange> ranges);
 
 // The room a kept buffer is made with beyond the `bytes` asked. On a CPU device a buffer is the host's memory, which
 // the operating system backs page by page at its first write, so room never written costs address space, not memory;

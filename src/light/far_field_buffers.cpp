@@ -55,6 +55,18 @@ std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_coun
   return std::size_t(far_field_table_budget_cells(p, patch_count) * double(far_row(patch_count)) * sizeof(float));
 }
 
+std::vector<CellRun> runs_of_cells_read(std::span<const std::uint8_t> read) {
+  std::vector<CellRun> runs;
+  for (std::size_t cell = 0; cell < read.size(); ++cell) {
+    if (read[cell] == 0) continue;
+    if (!runs.empty() && runs.back().end == cell)
+      ++runs.back().end;
+    else
+      runs.push_back({cell, cell + 1});
+  }
+  return runs;
+}
+
 std::optional<std::string> far_field_beyond_device(const LightParameters& p, const compute::DeviceMemory& memory,
                                                    const std::string& device_name) {
   if (p.exact || layouts_fit(p, p.far_field_table_mb, memory)) return std::nullopt;

@@ -6,9 +6,12 @@
 // after the stand was established and its tables begun. The solver checks the cap when it is made instead, and says
 // the largest cap the device holds.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "compute/compute_backend.hpp"
 #include "compute/device_memory.hpp"
@@ -37,6 +40,15 @@ std::size_t sweep_chunk(std::size_t patch_count);
 // of the table's rows (sweep_chunk out of far_row), and the over-read. The solver sizes its buffer and that buffer's
 // cap with it, and the device check counts the same bytes.
 std::size_t swept_layout_bytes(std::size_t table_bytes, std::size_t patch_count);
+
+// Cells [first, end) of the far field's grid, in the order of its table by cell.
+struct CellRun {
+  std::size_t first = 0, end = 0;
+};
+
+// The runs of consecutive cells that `read` marks (one byte a cell, non-zero where a receiver reads the cell: cl/
+// far_field.cl, far_field_mark_read), in order: the parts of the table by cell its layout writes.
+std::vector<CellRun> runs_of_cells_read(std::span<const std::uint8_t> read);
 
 // The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding.
 std::size_t far_table_cap_bytes(const LightParameters& p, std::size_t patch_count);

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <regex>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace heliostand {
 namespace {
@@ -80,6 +82,21 @@ TEST(FarFieldBuffers, TheSweepHoldsAChunkOfTheSkyAtATime) {
   EXPECT_EQ(swept_layout_bytes(512'000'000, 512), 128'000'064u);  // the default cap: a quarter
   EXPECT_EQ(swept_layout_bytes(136 * 4 * 1000, 130), 128 * 4 * 1000 + 64u);  // 1000 cells of a 10 x 13 sky
   EXPECT_EQ(swept_layout_bytes(32 * 4 * 10, 30), 32 * 4 * 10 + 64u);  // a 6 x 5 sky: the whole table
+}
+
+// The rows of the table by cell that the layout writes, and that are made resident before it (opencl_light_solver.cpp):
+// the runs of consecutive cells a receiver reads, in order, whatever marks them.
+TEST(FarFieldBuffers, TheRowsMadeResidentAreTheRunsOfCellsRead) {
+  const auto runs = [](std::vector<std::uint8_t> read) {
+    std::vector<std::pair<std::size_t, std::size_t>> found;
+    for (const CellRun& run : runs_of_cells_read(read)) found.emplace_back(run.first, run.end);
+    return found;
+  };
+  using Runs = std::vector<std::pair<std::size_t, std::size_t>>;
+  EXPECT_EQ(runs({0, 1, 1, 0, 1, 0, 0, 2, 1, 1}), (Runs{{1, 3}, {4, 5}, {7, 10}}));
+  EXPECT_EQ(runs({1, 1, 1}), (Runs{{0, 3}}));
+  EXPECT_EQ(runs({0, 0, 0}), Runs{});
+  EXPECT_EQ(runs({}), Runs{});
 }
 
 // Whatever the device and the sky, the advised cap fits and one MB more does not.
