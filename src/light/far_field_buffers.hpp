@@ -46,8 +46,8 @@ struct CellRun {
   std::size_t first = 0, end = 0;
 };
 
-// The runs of consecutive cells that `read` marks (one byte a cell, non-zero where a receiver reads the cell: cl/
-// far_field.cl, far_field_mark_read), in order: the parts of the table by cell its layout writes.
+// The runs of consecutive cells that `read` marks (one byte a cell, non-zero where a receiver reads the cell:
+// far_field_mark_read in cl/far_field.cl), in order: the parts of the table by cell its layout writes.
 std::vector<CellRun> runs_of_cells_read(std::span<const std::uint8_t> read);
 
 // The most the table laid out by cell may take: the far field's budget of cells, with the rows' padding.

@@ -138,9 +138,9 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
                                           swept_layout_bytes(table_cap_bytes, patch_count));
   // The layout by cell into a fresh buffer took three to four times as long as into a used one (docs/performance.md
   // "The far-field table kept from one solve to the next"). Only the rows of the cells a receiver reads are made
-  // resident: the layout writes no others (42-57 % of the cells at 10^6 and 10^5 balls). Once a buffer, and again as
-  // the table grows: a solve of the same table found its rows resident, and its far field paid up to 0.08 s at 10^5
-  // balls to be told so.
+  // resident, since the layout writes no others (42-57 % of the cells are read by none at 10^6 and 10^5 balls). Once a
+  // buffer, and again as the table grows: a solve of the same table found its rows resident, and its far field paid
+  // up to 0.08 s at 10^5 balls to be told so.
   const cl::Buffer& table =
       kept_at_least(device, table_kept, table_bytes, table_cap_bytes, compute::Residency::parts_by_the_caller);
   if (table_bytes > table_kept.resident_bytes) {
