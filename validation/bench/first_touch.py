@@ -25,7 +25,7 @@ import time
 
 GIB = float(1 << 30)
 PAGE = 4096
-MADV_POPULATE_WRITE = getattr(mmap, "MADV_POPULATE_WRITE", 23)  # Linux 5.14; Python names it from 3.12
+MADV_POPULATE_WRITE = getattr(mmap, "MADV_POPULATE_WRITE", 23)  # Linux 5.14; Debian 12's Python does not name it
 
 
 def whole_number(minimum):
