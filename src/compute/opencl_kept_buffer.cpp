@@ -24,7 +24,7 @@ const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, s
     kept.buffer = cl::Buffer(device.context, CL_MEM_READ_WRITE, kept.bytes);
     kept.resident_bytes = 0;
   }
-  if (residency == Residency::whole_use && bytes > kept.resident_bytes) {
+  if (residency == Residency::whole_use && makes_pages_resident(device) && bytes > kept.resident_bytes) {
     const ByteRange fresh{kept.resident_bytes, bytes};
     make_resident(device, kept.buffer, {&fresh, 1});
     kept.resident_bytes = bytes;
@@ -38,9 +38,17 @@ const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, s
 // (docs/performance.md "Kept buffers' pages made resident in one call"). The advice keeps what the pages hold; where
 // it is unknown or fails, the kernels' writes fault the pages in as before. Only the ranges given: a buffer's spare
 // room stays address space.
+bool makes_pages_resident(const OpenCLContext& device) {
+#ifdef MADV_POPULATE_WRITE
+  return (device.type & CL_DEVICE_TYPE_CPU) != 0;
+#else
+  return false;
+#endif
+}
+
 void make_resident(const OpenCLContext& device, const cl::Buffer& buffer, std::span<const ByteRange> ranges) {
 #ifdef MADV_POPULATE_WRITE
-  if (!(device.type & CL_DEVICE_TYPE_CPU) || ranges.empty()) return;
+  if (!makes_pages_resident(device) || ranges.empty()) return;
   std::size_t first = ranges.front().first, end = ranges.front().end;
   for (const ByteRange& range : ranges) first = std::min(first, range.first), end = std::max(end, range.end);
   if (end <= first) return;

@@ -18,8 +18,8 @@ namespace heliostand::compute {
 struct KeptBuffer {
   cl::Buffer buffer;
   std::size_t bytes = 0;
-  // On a CPU device, how far from its start its pages were made resident; for a use written in parts, how far its
-  // caller made those parts resident (0 again whenever the buffer is made anew).
+  // Where pages are made resident (makes_pages_resident), how far from its start they were; for a use written in
+  // parts, how far its caller made those parts resident. 0 elsewhere, and again whenever the buffer is made anew.
   std::size_t resident_bytes = 0;
 };
 
@@ -40,6 +40,10 @@ const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, s
 struct ByteRange {
   std::size_t first = 0, end = 0;
 };
+
+// Whether make_resident does anything for `device`: a CPU device's buffers are the host's memory, whose pages Linux
+// can make resident (MADV_POPULATE_WRITE); a GPU's are its own.
+bool makes_pages_resident(const OpenCLContext& device);
 
 // On a CPU device, the host's pages under each of `ranges` of `buffer` made resident and writable, in one call a range
 // and with one mapping of the buffer for all of them, before a kernel writes them: what kept_at_least does for a whole

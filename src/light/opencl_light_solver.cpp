@@ -100,11 +100,11 @@ const cl::Buffer& mark_cells_read(compute::OpenCLContext& device, cl::Kernel& k,
   return read;
 }
 
-// On a CPU device, the rows of the table by cell that `read` marks (mark_cells_read) made resident before the layout
-// writes them (compute::make_resident), each run of consecutive cells read in one call; the other rows stay unbacked.
+// The rows of the table by cell that `read` marks (mark_cells_read) made resident before the layout writes them
+// (compute::make_resident; the caller asks only where makes_pages_resident, which spares a GPU the marks' read-back),
+// each run of consecutive cells read in one call; the other rows stay unbacked.
 void make_rows_read_resident(compute::OpenCLContext& device, const cl::Buffer& table, const cl::Buffer& read,
                              std::size_t cells, std::size_t row_bytes) {
-  if (!(device.type & CL_DEVICE_TYPE_CPU)) return;
   std::vector<std::uint8_t> marks(cells);
   device.queue.enqueueReadBuffer(read, CL_TRUE, 0, cells, marks.data());
   std::vector<compute::ByteRange> rows;
@@ -143,7 +143,7 @@ cl::Buffer sweep_far_field(compute::OpenCLContext& device, cl::Kernel& k, cl::Ke
   // up to 0.08 s at 10^5 balls to be told so.
   const cl::Buffer& table =
       kept_at_least(device, table_kept, table_bytes, table_cap_bytes, compute::Residency::parts_by_the_caller);
-  if (table_bytes > table_kept.resident_bytes) {
+  if (compute::makes_pages_resident(device) && table_bytes > table_kept.resident_bytes) {
     make_rows_read_resident(device, table, read, cells, row * sizeof(float));
     table_kept.resident_bytes = table_bytes;
   }
