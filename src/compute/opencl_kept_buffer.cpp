@@ -32,12 +32,6 @@ const cl::Buffer& kept_at_least(const OpenCLContext& device, KeptBuffer& kept, s
   return kept.buffer;
 }
 
-// On the 2-core virtual machines of docs/performance.md a fresh 4 KiB page's first write costs far more than its bytes,
-// 2.7 s a GiB; made resident first by Linux's MADV_POPULATE_WRITE (5.14), the call costs 0.13 s a GiB and the first
-// write 1.25 (validation/bench/first_touch.py), which took a first light solve to 0.68-0.87 of its time
-// (docs/performance.md "Kept buffers' pages made resident in one call"). The advice keeps what the pages hold; where
-// it is unknown or fails, the kernels' writes fault the pages in as before. Only the ranges given: a buffer's spare
-// room stays address space.
 bool makes_pages_resident(const OpenCLContext& device) {
 #ifdef MADV_POPULATE_WRITE
   return (device.type & CL_DEVICE_TYPE_CPU) != 0;
@@ -46,6 +40,12 @@ bool makes_pages_resident(const OpenCLContext& device) {
 #endif
 }
 
+// On the 2-core virtual machines of docs/performance.md a fresh 4 KiB page's first write costs far more than its bytes,
+// 2.7 s a GiB; made resident first by Linux's MADV_POPULATE_WRITE (5.14), the call costs 0.13 s a GiB and the first
+// write 1.25 (validation/bench/first_touch.py), which took a first light solve to 0.68-0.87 of its time
+// (docs/performance.md "Kept buffers' pages made resident in one call"). The advice keeps what the pages hold; where
+// it is unknown or fails, the kernels' writes fault the pages in as before. Only the ranges given: a buffer's spare
+// room stays address space.
 void make_resident(const OpenCLContext& device, const cl::Buffer& buffer, std::span<const ByteRange> ranges) {
 #ifdef MADV_POPULATE_WRITE
   if (!makes_pages_resident(device) || ranges.empty()) return;
