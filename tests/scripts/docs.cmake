@@ -36,3 +36,39 @@ add_test(NAME docs.section_references_check_reports_the_same_outside_git
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
                  ${HELIOSTAND_TEST_PYTHON} ${DOCS_CHECK} ${PROJECT_SOURCE_DIR}/tests/docs/fixture)
 set_tests_properties(docs.section_references_check_reports_the_same_outside_git PROPERTIES LABELS "docs" TIMEOUT 60)
+
+# The summary of the goal hectare's runs in docs/performance.md ("Every hectare on two cores") is what
+# validation/bench/hectare_runs.py makes of validation/bench/hectare_runs.csv: a run added to the file and not to the
+# summary, or a figure changed in the summary alone, fails. The other checks run the script on the fixture in
+# tests/docs/hectare_runs: a summary one median out of date is reported with the line that differs, and rows that
+# cannot be runs (a negative wall time, a run out of order, a section the doc lacks, a field missing) are errors
+# naming the file, line and field.
+set(HECTARE_RUNS ${PROJECT_SOURCE_DIR}/validation/bench/hectare_runs.py)
+set(HECTARE_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/hectare_runs)
+add_test(NAME docs.hectare_runs_summary_matches_the_runs
+         COMMAND ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
+add_test(NAME docs.hectare_runs_check_reports_a_stale_summary
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1
+                 "-DEXPECT_OUTPUT=stale.md: its summary of the hectare's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.0 s \\(1.05\\) [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.5 s \\(1.05\\) "
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --runs ${HECTARE_RUNS_FIXTURE}/runs.csv
+                 --sections ${HECTARE_RUNS_FIXTURE}/sections.md --check ${HECTARE_RUNS_FIXTURE}/stale.md)
+set(HECTARE_RUNS_BAD_ROWS
+    "bad_wall|bad_wall.csv:3: field 'wall_s': -580.0 seconds is not a positive, finite amount"
+    "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
+    "no_section|no_section.csv:3: field 'section': [^\n]*sections.md has no section \"A slow hour\""
+    "short_row|short_row.csv:3: field 'peak_mib': missing")
+foreach(case IN LISTS HECTARE_RUNS_BAD_ROWS)
+  string(REPLACE "|" ";" case "${case}")
+  list(GET case 0 name)
+  list(GET case 1 message)
+  add_test(NAME docs.hectare_runs_rejects_${name}
+           COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=2 "-DEXPECT_OUTPUT=^[^\n]*${message}"
+                   -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                   ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --runs ${HECTARE_RUNS_FIXTURE}/${name}.csv
+                   --sections ${HECTARE_RUNS_FIXTURE}/sections.md)
+endforeach()
+set_tests_properties(docs.hectare_runs_summary_matches_the_runs docs.hectare_runs_check_reports_a_stale_summary
+                     docs.hectare_runs_rejects_bad_wall docs.hectare_runs_rejects_out_of_order
+                     docs.hectare_runs_rejects_no_section docs.hectare_runs_rejects_short_row
+                     PROPERTIES LABELS "docs" TIMEOUT 60)
