@@ -48,8 +48,12 @@ COLUMNS = ["date", "time_utc", "machine_started", "code", "variant", "kernels", 
 HEADING = re.compile(r"^#{1,6}\s+(.+?)\s*$")
 
 
+class BadInput(Exception):
+    """A runs file or a doc that cannot be read as one: its message names the file and line."""
+
+
 class BadRow(Exception):
-    pass
+    """A field of a row that cannot be what its column holds: (field, reason)."""
 
 
 def parse_date(text, what):
@@ -81,6 +85,12 @@ def not_empty(text):
     return text
 
 
+def machine_start(text):
+    if text:
+        parse_date(text, "%Y-%m-%d %H:%M")
+    return text
+
+
 def yes_or_no(text):
     if text not in ("yes", "no"):
         raise BadRow(f"'{text}' is neither yes nor no")
@@ -105,7 +115,7 @@ def read_run(row, doc, headings):
     return {
         "date": field("date", lambda t: parse_date(t, "%Y-%m-%d")),
         "time": field("time_utc", lambda t: parse_date(t, "%H:%M").time() if t else None),
-        "machine_started": field("machine_started", lambda t: parse_date(t, "%Y-%m-%d %H:%M") and t if t else ""),
+        "machine_started": field("machine_started", machine_start),
         "code": field("code", commit),
         "kernels": field("kernels", not_empty),
         "same_tables": field("same_tables", yes_or_no),
@@ -121,24 +131,25 @@ def read_runs(path, doc):
     with open(path, newline="", encoding="utf-8") as f:
         reader = csv.DictReader(f)
         if reader.fieldnames != COLUMNS:
-            raise SystemExit(f"{path}:1: the header must be {','.join(COLUMNS)}, not {','.join(reader.fieldnames or [])}")
+            raise BadInput(f"{path}:1: the header must be {','.join(COLUMNS)}, not {','.join(reader.fieldnames or [])}")
         for row in reader:
             line = reader.line_num
             try:
                 if None in row:
-                    raise BadRow("section", "the row has more fields than the header")
+                    raise BadRow("section", "followed by more fields than the header has (a value with a comma "
+                                 "needs quotes)")
                 run = read_run(row, doc, headings)
             except BadRow as error:
                 field, reason = error.args
-                raise SystemExit(f"{path}:{line}: field '{field}': {reason}") from None
+                raise BadInput(f"{path}:{line}: field '{field}': {reason}") from None
             when = (run["date"], run["time"] or datetime.time.min)
             if last is not None and when < last:
-                raise SystemExit(f"{path}:{line}: field 'time_utc': the run is earlier than the row before it (rows "
+                raise BadInput(f"{path}:{line}: field 'time_utc': the run is earlier than the row before it (rows "
                                  "are in the order the runs started)")
             last = when
             runs.append(run)
     if not runs:
-        raise SystemExit(f"{path}: no runs")
+        raise BadInput(f"{path}: no runs")
     return runs
 
 
@@ -194,7 +205,7 @@ def summary(runs):
 def doc_block(text, path):
     lines = text.split("\n")
     if lines.count(BEGIN) != 1 or lines.count(END) != 1 or lines.index(BEGIN) > lines.index(END):
-        raise SystemExit(f"{path}: needs one line\n  {BEGIN}\nand after it one line\n  {END}")
+        raise BadInput(f"{path}: needs one line\n  {BEGIN}\nand after it one line\n  {END}")
     return lines, lines.index(BEGIN) + 1, lines.index(END)
 
 
@@ -212,7 +223,7 @@ def main():
     except OSError as error:
         print(f"{error.filename}: {error.strerror}", file=sys.stderr)
         return 2
-    except SystemExit as error:
+    except BadInput as error:
         print(error, file=sys.stderr)
         return 2
     if not (args.write or args.check):
@@ -224,7 +235,7 @@ def main():
     except OSError as error:
         print(f"{doc}: {error.strerror}", file=sys.stderr)
         return 2
-    except SystemExit as error:
+    except BadInput as error:
         print(error, file=sys.stderr)
         return 2
     inner = [""] + block + [""]  # a blank line either side, so the tables stand apart from the markers
