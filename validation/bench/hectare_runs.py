@@ -219,25 +219,22 @@ def main():
     action.add_argument("--check", type=pathlib.Path, metavar="DOC")
     args = parser.parse_args()
     try:
-        block = summary(read_runs(args.runs, args.sections))
+        return run(args)
     except OSError as error:
         print(f"{error.filename}: {error.strerror}", file=sys.stderr)
         return 2
     except BadInput as error:
         print(error, file=sys.stderr)
         return 2
+
+
+def run(args):
+    block = summary(read_runs(args.runs, args.sections))
     if not (args.write or args.check):
         print("\n".join(block))
         return 0
     doc = args.write or args.check
-    try:
-        lines, first, end = doc_block(doc.read_text(encoding="utf-8"), doc)
-    except OSError as error:
-        print(f"{doc}: {error.strerror}", file=sys.stderr)
-        return 2
-    except BadInput as error:
-        print(error, file=sys.stderr)
-        return 2
+    lines, first, end = doc_block(doc.read_text(encoding="utf-8"), doc)
     inner = [""] + block + [""]  # a blank line either side, so the tables stand apart from the markers
     if args.check:
         if lines[first:end] == inner:
@@ -253,7 +250,6 @@ def main():
     temporary.write_text("\n".join(lines), encoding="utf-8")
     temporary.replace(doc)
     return 0
-
 
 if __name__ == "__main__":
     sys.exit(main())
