@@ -46,6 +46,7 @@ END = "<!-- end of validation/bench/hectare_runs.py's lines -->"
 COLUMNS = ["date", "time_utc", "machine_started", "code", "variant", "kernels", "same_tables", "wall_s", "peak_mib",
            "section"]
 HEADING = re.compile(r"^#{1,6}\s+(.+?)\s*$")
+FORMS = {"%Y": "YYYY", "%m": "MM", "%d": "DD", "%H": "HH", "%M": "MM"}  # strptime's codes as a reader writes them
 
 
 class BadInput(Exception):
@@ -60,7 +61,8 @@ def parse_date(text, what):
     try:
         return datetime.datetime.strptime(text, what)
     except ValueError:
-        raise BadRow(f"'{text}' is not a date and time of the form {what.replace('%', '')}") from None
+        form = re.sub("%[YmdHM]", lambda m: FORMS[m.group()], what)
+        raise BadRow(f"'{text}' is not of the form {form}") from None
 
 
 def positive(text, kind, unit):
@@ -189,7 +191,8 @@ def summary(runs):
         lines.append(row_of("all", kept))
     latest = [r for r in kept if r["kernels"] == generations[-1]]
     lines += ["", f"With the latest kernels ({generations[-1]}), machine by machine:", "",
-              "| machine started (UTC) | runs | under 10 min | median (of the line) | quickest–slowest | peak memory |",
+              "| machine started (UTC) | runs | under 10 min | median (of the line) | quickest–slowest "
+              "| peak memory |",
               "|---|---:|---:|---:|---:|---:|"]
     for started in dict.fromkeys(r["machine_started"] for r in latest):
         machine = [r for r in latest if r["machine_started"] == started]
