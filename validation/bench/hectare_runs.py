@@ -34,6 +34,7 @@ import argparse
 import csv
 import datetime
 import difflib
+import math
 import pathlib
 import re
 import statistics
@@ -70,7 +71,7 @@ def positive(text, kind, unit):
         value = kind(text)
     except ValueError:
         raise BadRow(f"'{text}' is not a number of {unit}") from None
-    if not value > 0 or value != value or value == float("inf"):
+    if not (value > 0 and math.isfinite(value)):
         raise BadRow(f"{text} {unit} is not a positive, finite amount")
     return value
 
@@ -163,11 +164,8 @@ def seconds(value):
 
 def spaced(number):
     """Thousands apart by a space, as the docs write them (4 613 MiB)."""
-    whole, _, fraction = str(number).partition(".")
-    groups = []
-    while len(whole) > 3:
-        whole, groups = whole[:-3], [whole[-3:]] + groups
-    return " ".join([whole] + groups) + ("." + fraction if fraction else "")
+    whole, point, fraction = str(number).partition(".")
+    return f"{int(whole):,}".replace(",", " ") + point + fraction
 
 
 def row_of(label, runs):
@@ -253,6 +251,7 @@ def run(args):
     temporary.write_text("\n".join(lines), encoding="utf-8")
     temporary.replace(doc)
     return 0
+
 
 if __name__ == "__main__":
     sys.exit(main())
