@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/cli_runner.hpp"
+#include "cli/bench_run.hpp"
 #include "compute/device_choice.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/establishment.hpp"
@@ -17,18 +17,8 @@ namespace fs = std::filesystem;
 
 using testing::tiny_bench_stand;
 
-struct Bench {
-  CliResult cli;
-  nlohmann::json json;
-};
-
-Bench bench_light(const fs::path& folder, const std::string& arguments) {
-  fs::create_directories(folder);
-  const fs::path json = folder / "light.json";
-  Bench bench;
-  bench.cli = run_cli("bench light " + arguments + " -o " + json.string() + " -q");
-  if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
-  return bench;
+BenchRun bench_light(const fs::path& folder, const std::string& arguments) {
+  return run_bench(folder, "light.json", "light " + arguments);
 }
 
 // The leaf balls of the stand `grow` starts from: establish_stand's trees, counted here without the command.
@@ -64,7 +54,7 @@ const std::string parameters_only = " --device none --reference-exact-max 0 --re
 // issue 16, mean |Δlight| ≤ 0.01, on this small stand whose far field is a few metres of neighbours.
 TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
   const bool opencl = compute::opencl_device_exists();
-  const Bench bench = bench_light(scratch_folder("bench-light-stand"),
+  const BenchRun bench = bench_light(scratch_folder("bench-light-stand"),
                                   "--stand " + tiny_bench_stand.string() + " --device " + (opencl ? "opencl" : "none"));
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const auto& stands = bench.json.at("stands");
@@ -100,7 +90,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   const fs::path scenario = tiny_scenario(
       folder / "scenario.toml", "cutoff_m = 5.0\nfar_field_hand_over_cells = 0.5\nfar_field_table_mb = 256\n");
 
-  const Bench own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
+  const BenchRun own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
   ASSERT_EQ(own.cli.status, 0) << own.cli.output;
   const auto& own_parameters = own.json.at("stands").at(0).at("parameters");
   EXPECT_EQ(own_parameters.at("cutoff_m"), 5.0) << "no --cutoff: the scenario's";
@@ -109,7 +99,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(own_parameters.at("far_field_hand_over_cells"), 0.5) << "no --far-field-hand-over: the scenario's";
   EXPECT_EQ(own_parameters.at("far_field_table_mb"), 256.0) << "no --far-field-table-mb: the scenario's";
 
-  const Bench given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
+  const BenchRun given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
                                                         " --cutoff 2 --far-field-hand-over 0.75" +
                                                         " --far-field-table-mb 600" +
                                                         " --no-far-field-bias-correction --periodic" +
@@ -137,7 +127,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
 TEST(BenchLightStandCli, AScenarioPathNotInUtf8StillGivesValidJson) {
   const fs::path folder = scratch_folder("bench-light-stand-latin1");
   const fs::path scenario = tiny_scenario(folder / "caf\xe9" / "scenario.toml", "");
-  const Bench bench = bench_light(folder / "out", "--stand '" + scenario.string() + "'" + parameters_only);
+  const BenchRun bench = bench_light(folder / "out", "--stand '" + scenario.string() + "'" + parameters_only);
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   EXPECT_EQ(bench.json.at("stands").at(0).at("stand"), (folder / "caf\xef\xbf\xbd" / "scenario.toml").string());
 }

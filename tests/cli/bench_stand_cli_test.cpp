@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/cli_runner.hpp"
+#include "cli/bench_run.hpp"
 #include "compute/device_choice.hpp"
 #include "io/read_multiblock.hpp"
 #include "scoped_environment.hpp"
@@ -27,20 +27,10 @@ namespace fs = std::filesystem;
 // The bench's tiny stand; the reference solver keeps it quick and device-free.
 using testing::tiny_bench_stand;
 
-struct Bench {
-  CliResult cli;
-  nlohmann::json json;
-};
-
 // One year of the tiny stand; the JSON is read from -o (stdout and stderr share the captured output).
-Bench bench_tiny(const fs::path& folder, const std::string& extra = "", const std::string& device = "reference") {
-  fs::create_directories(folder);
-  const fs::path json = folder / "bench.json";
-  Bench bench;
-  bench.cli = run_cli("bench stand " + tiny_bench_stand.string() + " --years 1 --device " + device + " -o " + json.string() +
-                      " " + extra + " -q");
-  if (bench.cli.status == 0) bench.json = nlohmann::json::parse(read_text(json));
-  return bench;
+BenchRun bench_tiny(const fs::path& folder, const std::string& extra = "", const std::string& device = "reference") {
+  return run_bench(folder, "bench.json",
+                   "stand " + tiny_bench_stand.string() + " --years 1 --device " + device + " " + extra);
 }
 
 // A block of the run's last year (age 21), or null where the year has none of that name.
@@ -57,7 +47,7 @@ vtkSmartPointer<vtkPolyData> block_of_year(const fs::path& run, const std::strin
 
 TEST(BenchStandCli, ReportsTheRunAsJson) {
   const fs::path folder = scratch_folder("bench-stand-json");
-  const Bench bench = bench_tiny(folder);
+  const BenchRun bench = bench_tiny(folder);
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const auto& json = bench.json;
   EXPECT_EQ(json.at("benchmark"), "stand");
@@ -165,7 +155,7 @@ TEST(BenchStandCli, ReportsWhatEachYearCost) {
 // tile lists it scans (what sizes the light stage's candidate memory) must still reach the JSON.
 TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
   if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
-  const Bench bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
+  const BenchRun bench = bench_tiny(scratch_folder("bench-stand-opencl"), "", "opencl");
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   EXPECT_GT(bench.json.at("light_tile_candidates_per_ball").get<double>(), 0.0);
   // the one pass (stand and trees alone) reports its parts too
@@ -198,7 +188,7 @@ TEST(BenchStandCli, CoarsenedFarFieldIsSaidOnceAndReported) {
   EXPECT_GT(report.at("light_far_field_cell_m_max").get<double>(), 0.5) << "a 1 MB table cannot hold 0.1 m cells";
 
   // the tiny stand at its own 1 m cells stays under the default cap: nothing said, the asked cell reported
-  const Bench plain = bench_tiny(scratch_folder("bench-stand-far-field-plain"));
+  const BenchRun plain = bench_tiny(scratch_folder("bench-stand-far-field-plain"));
   ASSERT_EQ(plain.cli.status, 0) << plain.cli.output;
   EXPECT_EQ(plain.cli.output.find("light far field:"), std::string::npos) << plain.cli.output;
   EXPECT_DOUBLE_EQ(plain.json.at("light_far_field_cell_m_max").get<double>(), 1.0);
@@ -207,7 +197,7 @@ TEST(BenchStandCli, CoarsenedFarFieldIsSaidOnceAndReported) {
 // The counts are the stand's: the same year grown by `grow` writes as many leaf balls and root segments.
 TEST(BenchStandCli, CountsMatchTheGrownStand) {
   const fs::path folder = scratch_folder("bench-stand-counts");
-  const Bench bench = bench_tiny(folder);
+  const BenchRun bench = bench_tiny(folder);
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const CliResult grown =
       run_cli("grow " + tiny_bench_stand.string() + " --years 1 --device reference --out " + (folder / "grown").string() +
@@ -226,7 +216,7 @@ TEST(BenchStandCli, WritesTheTablesOnlyWhereAsked) {
   const fs::path folder = scratch_folder("bench-stand-tables");
   const fs::path temporary = folder / "tmp";
   fs::create_directories(temporary);
-  const Bench scratch = [&] {
+  const BenchRun scratch = [&] {
     // Inherited by the command (std::filesystem::temp_directory_path).
     const ScopedEnvironment tmpdir("TMPDIR", temporary.string());
     return bench_tiny(folder);
@@ -235,7 +225,7 @@ TEST(BenchStandCli, WritesTheTablesOnlyWhereAsked) {
   EXPECT_TRUE(fs::is_empty(temporary)) << "the temporary tables are removed";
 
   const fs::path tables = folder / "tables";
-  const Bench kept = bench_tiny(folder, "--tables " + tables.string());
+  const BenchRun kept = bench_tiny(folder, "--tables " + tables.string());
   ASSERT_EQ(kept.cli.status, 0) << kept.cli.output;
   for (const char* file : {"stand_table.csv", "trees.csv", "events.csv", "run.json"})
     EXPECT_TRUE(fs::exists(tables / file)) << file;
