@@ -54,8 +54,9 @@ const std::string parameters_only = " --device none --reference-exact-max 0 --re
 // issue 16, mean |Δlight| ≤ 0.01, on this small stand whose far field is a few metres of neighbours.
 TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
   const bool opencl = compute::opencl_device_exists();
-  const BenchRun bench = bench_light(scratch_folder("bench-light-stand"),
-                                  "--stand " + tiny_bench_stand.string() + " --device " + (opencl ? "opencl" : "none"));
+  const BenchRun bench =
+      bench_light(scratch_folder("bench-light-stand"),
+                  "--stand " + tiny_bench_stand.string() + " --device " + (opencl ? "opencl" : "none"));
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   const auto& stands = bench.json.at("stands");
   ASSERT_EQ(stands.size(), 1u) << "--stand alone runs no synthetic stand";
@@ -100,10 +101,10 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   EXPECT_EQ(own_parameters.at("far_field_table_mb"), 256.0) << "no --far-field-table-mb: the scenario's";
 
   const BenchRun given = bench_light(folder / "given", "--balls 200 --stand " + scenario.string() +
-                                                        " --cutoff 2 --far-field-hand-over 0.75" +
-                                                        " --far-field-table-mb 600" +
-                                                        " --no-far-field-bias-correction --periodic" +
-                                                        parameters_only);
+                                                           " --cutoff 2 --far-field-hand-over 0.75" +
+                                                           " --far-field-table-mb 600" +
+                                                           " --no-far-field-bias-correction --periodic" +
+                                                           parameters_only);
   ASSERT_EQ(given.cli.status, 0) << given.cli.output;
   const auto& stands = given.json.at("stands");
   ASSERT_EQ(stands.size(), 2u) << "one synthetic stand, then the scenario's";
