@@ -7,8 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "cli/bench_run.hpp"
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
 
@@ -17,18 +16,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string small = " --balls 300 --subsample 50 --reference-exact-max 300 --reference-culled-max 0 -q";
+const std::string small = " --balls 300 --subsample 50 --reference-exact-max 300 --reference-culled-max 0";
 
 }  // namespace
 
 TEST(BenchLightEvaluationsCli, LaterEvaluationsAreListedAfterTheFirst) {
   if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device: the default solver's row is not run";
   const fs::path folder = scratch_folder("bench-light-evaluations");
-  fs::create_directories(folder);
-  const CliResult three = run_cli("bench light" + small + " --evaluations 3 -o " + (folder / "three.json").string());
-  ASSERT_EQ(three.status, 0) << three.output;
-  const auto row =
-      nlohmann::json::parse(read_text(folder / "three.json")).at("stands").at(0).at("opencl_culled_far_field");
+  const BenchRun three = run_bench(folder, "three.json", "light" + small + " --evaluations 3");
+  ASSERT_EQ(three.cli.status, 0) << three.cli.output;
+  const auto row = three.json.at("stands").at(0).at("opencl_culled_far_field");
   ASSERT_TRUE(row.contains("later_evaluations")) << row.dump(1);
   const auto& later = row.at("later_evaluations");
   ASSERT_EQ(later.size(), 2u) << row.dump(1);
@@ -42,9 +39,9 @@ TEST(BenchLightEvaluationsCli, LaterEvaluationsAreListedAfterTheFirst) {
   }
   EXPECT_TRUE(row.contains("error_vs_reference_exact")) << "the first evaluation is still the row's";
 
-  const CliResult one = run_cli("bench light" + small + " -o " + (folder / "one.json").string());
-  ASSERT_EQ(one.status, 0) << one.output;
-  const auto first_only = nlohmann::json::parse(read_text(folder / "one.json")).at("stands").at(0);
+  const BenchRun one = run_bench(folder, "one.json", "light" + small);
+  ASSERT_EQ(one.cli.status, 0) << one.cli.output;
+  const auto first_only = one.json.at("stands").at(0);
   EXPECT_FALSE(first_only.at("opencl_culled_far_field").contains("later_evaluations")) << "one evaluation by default";
 }
 
@@ -57,7 +54,7 @@ void expect_refused_before_any_json(const std::string& test_name, const std::str
   const fs::path folder = scratch_folder(test_name);
   fs::create_directories(folder);
   const fs::path json = folder / "light.json";
-  const CliResult refused = run_cli("bench light" + small + flags + " -o " + json.string());
+  const CliResult refused = run_cli("bench light" + small + flags + " -o " + json.string() + " -q");
   EXPECT_EQ(refused.status, 2) << refused.output;
   for (const std::string& text : named) EXPECT_NE(refused.output.find(text), std::string::npos) << refused.output;
   EXPECT_EQ(refused.output.find("\"benchmark\""), std::string::npos) << "no JSON on stdout: " << refused.output;
@@ -75,7 +72,7 @@ TEST(BenchLightEvaluationsCli, ZeroEvaluationsIsRefusedBeforeAnyJson) {
 TEST(BenchLightEvaluationsCli, SeveralEvaluationsWithoutTheOpenCLSolverAreRefused) {
   expect_refused_before_any_json("bench-light-evaluations-none", " --device none --evaluations 2",
                                  {"--evaluations", "--device none"});
-  const CliResult one = run_cli("bench light" + small + " --device none --evaluations 1");
+  const CliResult one = run_cli("bench light" + small + " --device none --evaluations 1 -q");
   EXPECT_EQ(one.status, 0) << "one evaluation is what --device none runs anyway: " << one.output;
 }
 
