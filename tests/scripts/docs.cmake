@@ -39,10 +39,11 @@ set_tests_properties(docs.section_references_check_reports_the_same_outside_git 
 
 # The summary of the goal hectare's runs in docs/performance.md ("Every hectare on two cores") is what
 # validation/bench/hectare_runs.py makes of validation/bench/hectare_runs.csv: a run added to the file and not to the
-# summary, or a figure changed in the summary alone, fails. The other checks run the script on the fixture in
-# tests/docs/hectare_runs: a summary one median out of date is reported with the line that differs, and rows that
-# cannot be runs (a negative wall time, a run out of order, a section the doc lacks, a field missing) are errors
-# naming the file, line and field.
+# summary, or a figure changed in the summary alone, fails, and so does a goal table that quotes the summary's median
+# or counts otherwise than the runs give them. The other checks run the script on the fixture in
+# tests/docs/hectare_runs: a summary one median out of date is reported with the line that differs, a goal table's
+# count one run behind with the words it should read, and rows that cannot be runs (a negative wall time, a run out
+# of order, a section the doc lacks, a field missing) are errors naming the file, line and field.
 set(HECTARE_RUNS ${PROJECT_SOURCE_DIR}/validation/bench/hectare_runs.py)
 set(HECTARE_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/hectare_runs)
 add_test(NAME docs.hectare_runs_summary_matches_the_runs
@@ -53,6 +54,12 @@ add_test(NAME docs.hectare_runs_check_reports_a_stale_summary
                  -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
                  ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --runs ${HECTARE_RUNS_FIXTURE}/runs.csv
                  --sections ${HECTARE_RUNS_FIXTURE}/sections.md --check ${HECTARE_RUNS_FIXTURE}/stale.md)
+add_test(NAME docs.hectare_runs_check_reports_an_unquoted_count
+         COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=1
+                 "-DEXPECT_OUTPUT=unquoted.md: the summary of 14 lines matches runs.csv\n.*unquoted.md: the front goal table's hectare verdict does not read \"\\(1 of 3 runs;\", as runs.csv gives it"
+                 -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
+                 ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --runs ${HECTARE_RUNS_FIXTURE}/runs.csv
+                 --sections ${HECTARE_RUNS_FIXTURE}/sections.md --check ${HECTARE_RUNS_FIXTURE}/unquoted.md)
 set(HECTARE_RUNS_BAD_ROWS
     "bad_wall|bad_wall.csv:3: field 'wall_s': -580.0 seconds is not a positive, finite amount"
     "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
@@ -69,6 +76,7 @@ foreach(case IN LISTS HECTARE_RUNS_BAD_ROWS)
                    --sections ${HECTARE_RUNS_FIXTURE}/sections.md)
 endforeach()
 set_tests_properties(docs.hectare_runs_summary_matches_the_runs docs.hectare_runs_check_reports_a_stale_summary
+                     docs.hectare_runs_check_reports_an_unquoted_count
                      docs.hectare_runs_rejects_bad_wall docs.hectare_runs_rejects_out_of_order
                      docs.hectare_runs_rejects_no_section docs.hectare_runs_rejects_short_row
                      PROPERTIES LABELS "docs" TIMEOUT 60)

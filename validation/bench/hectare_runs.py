@@ -21,11 +21,17 @@ order they ran:
 The summary is two Markdown tables: the runs of each kernel generation (how many, how many under the 10 minutes, the
 median, the quickest and slowest, the peak memory) and, for the latest generation, the same machine by machine.
 
+The goal tables at the front of docs/performance.md quote the summary's figures in their own words (the median, the
+counts, the ranges); --check also asks that each of those quotations (QUOTATIONS below) read as the runs give it, so
+that a run added to the file fails until the goal tables say so too. A doc whose goal tables word a figure otherwise
+fails as well: the message gives the sentence to write.
+
     validation/bench/hectare_runs.py                       print the summary
     validation/bench/hectare_runs.py --write docs/performance.md
                                                            put it between the doc's two marker lines
     validation/bench/hectare_runs.py --check docs/performance.md
-                                                           exit 1 if the doc's lines differ from it (CTest runs this)
+                                                           exit 1 if the doc's lines differ from it, or a quotation
+                                                           of it in the goal tables does (CTest runs this)
 
 A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
 error naming the file, line and field: exit 2, and nothing is written.
@@ -168,19 +174,31 @@ def spaced(number):
     return f"{int(whole):,}".replace(",", " ") + point + fraction
 
 
-def row_of(label, runs):
+def figures_of(runs):
+    """The figures of a group of runs as the docs write them: how many, how many under the line, the median (and
+    its share of the line), the quickest and slowest, the lowest and highest peak."""
     walls = sorted(r["wall_s"] for r in runs)
     peaks = [r["peak_mib"] for r in runs]
     median = statistics.median(walls)
-    under = sum(w < GOAL_SECONDS for w in walls)
-    return (f"| {label} | {len(runs)} | {under} | {spaced(seconds(median))} s ({median / GOAL_SECONDS:.2f}) | "
-            f"{spaced(seconds(walls[0]))}–{spaced(seconds(walls[-1]))} s | "
-            f"{spaced(min(peaks))}–{spaced(max(peaks))} MiB |")
+    return {"runs": len(runs), "under": sum(w < GOAL_SECONDS for w in walls), "median": spaced(seconds(median)),
+            "of_line": f"{median / GOAL_SECONDS:.2f}",
+            "walls": f"{spaced(seconds(walls[0]))}–{spaced(seconds(walls[-1]))} s",
+            "peaks": f"{spaced(min(peaks))}–{spaced(max(peaks))} MiB"}
+
+
+def row_of(label, runs):
+    f = figures_of(runs)
+    return f"| {label} | {f['runs']} | {f['under']} | {f['median']} s ({f['of_line']}) | {f['walls']} | {f['peaks']} |"
+
+
+def kept_and_generations(runs):
+    """The runs that grew the same tables, and their kernel generations in the order they first ran."""
+    kept = [r for r in runs if r["same_tables"]]
+    return kept, list(dict.fromkeys(r["kernels"] for r in kept))
 
 
 def summary(runs):
-    kept = [r for r in runs if r["same_tables"]]
-    generations = list(dict.fromkeys(r["kernels"] for r in kept))
+    kept, generations = kept_and_generations(runs)
     lines = ["| kernels | runs | under 10 min | median (of the line) | quickest–slowest | peak memory |",
              "|---|---:|---:|---:|---:|---:|"]
     for kernels in generations:
@@ -201,6 +219,56 @@ def summary(runs):
     lines += ["", f"{len(runs)} runs in the file" + (
         f", {left_out} of them left out of these counts: their tables differ." if left_out else ".")]
     return lines
+
+
+ONES = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+        "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+TENS = ["", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
+
+
+def in_words(number):
+    """A count as the docs' prose writes it (fifty-nine); counts of a hundred and more in digits."""
+    if number < 20:
+        return ONES[number]
+    if number < 100:
+        return TENS[number // 10] + ("-" + ONES[number % 10] if number % 10 else "")
+    return spaced(number)
+
+
+# Each quotation of the summary in docs/performance.md's goal tables: where it is, and what it must read, made from
+# the figures of all kept runs (a) and of the latest kernels' runs (t, "today's kernels").
+QUOTATIONS = [
+    ("the front goal table's hectare row", lambda a, t:
+        f"median **{t['median']} s** of the {t['runs']} runs with today's kernels ({t['walls']}; "
+        f"{a['under']} of {a['runs']} runs in all under the line)"),
+    ("the front goal table's hectare verdict", lambda a, t: f"({t['under']} of {t['runs']} runs;"),
+    ("the front goal table's memory row", lambda a, t: f"| … and < 8 GiB | {a['peaks']} |"),
+    ("\"The goal table in full\"'s paragraph", lambda a, t:
+        f"it came under its line in {in_words(t['under'])} run{'' if t['under'] == 1 else 's'} of "
+        f"{in_words(t['runs'])} (a median of {t['median']} s, {t['of_line']} of the line)"),
+    ("\"The goal table in full\"'s hectare row", lambda a, t:
+        f"**{a['walls']}** in {a['runs']} runs ({a['under']} under the line); with today's kernels {t['walls']}, a "
+        f"median of {t['median']} s, {t['under']} of {t['runs']} under"),
+    ("\"The goal table in full\"'s hectare verdict", lambda a, t:
+        f"**yes on the family-26 EPYC in {in_words(a['under'])} runs of {a['runs']}** ("),
+    ("\"The goal table in full\"'s hectare verdict", lambda a, t:
+        f"{in_words(t['under'])} of {t['runs']} with today's kernels"),
+    ("\"The goal table in full\"'s hectare verdict", lambda a, t: f"and **no** in {in_words(a['runs'] - a['under'])};"),
+    ("\"The goal table in full\"'s memory row", lambda a, t: f"| — and < 8 GiB | {a['peaks']} |"),
+    ("the detailed goal table's hectare row", lambda a, t:
+        f"{a['runs']} runs that grew the same tables, each a row of `validation/bench/hectare_runs.csv`"),
+    ("the detailed goal table's hectare row", lambda a, t:
+        f"**{a['walls']}, {a['peaks']} peak**; with today's kernels {t['walls']}, a median of **{t['median']} s**"),
+]
+
+
+def unquoted(runs, text):
+    """The quotations the doc's text does not hold as the runs give them: (where, what it should read). Prose is
+    wrapped, so the text is read with its line breaks as spaces."""
+    flat = " ".join(text.split("\n"))
+    kept, generations = kept_and_generations(runs)
+    every, today = figures_of(kept), figures_of([r for r in kept if r["kernels"] == generations[-1]])
+    return [(where, quote) for where, quote in ((w, q(every, today)) for w, q in QUOTATIONS) if quote not in flat]
 
 
 def doc_block(text, path):
@@ -229,27 +297,45 @@ def main():
         return 2
 
 
+def report_unquoted(doc, missing, runs_name):
+    for where, quote in missing:
+        print(f"{doc}: {where} does not read \"{quote}\", as {runs_name} gives it; write it there", file=sys.stderr)
+
+
 def run(args):
-    block = summary(read_runs(args.runs, args.sections))
+    runs = read_runs(args.runs, args.sections)
+    block = summary(runs)
     if not (args.write or args.check):
         print("\n".join(block))
         return 0
     doc = args.write or args.check
-    lines, first, end = doc_block(doc.read_text(encoding="utf-8"), doc)
+    text = doc.read_text(encoding="utf-8")
+    lines, first, end = doc_block(text, doc)
     inner = [""] + block + [""]  # a blank line either side, so the tables stand apart from the markers
+    missing = unquoted(runs, text)
     if args.check:
+        failed = False
         if lines[first:end] == inner:
             print(f"{doc}: the summary of {len(block)} lines matches {args.runs.name}")
-            return 0
-        print(f"{doc}: its summary of the hectare's runs differs from {args.runs.name}'s; run "
-              f"validation/bench/hectare_runs.py --write {doc}", file=sys.stderr)
-        sys.stderr.writelines(line + "\n" for line in difflib.unified_diff(
-            lines[first:end], inner, f"{doc} (lines {first + 1}-{end})", f"{args.runs.name} summarised", lineterm=""))
-        return 1
+        else:
+            failed = True
+            print(f"{doc}: its summary of the hectare's runs differs from {args.runs.name}'s; run "
+                  f"validation/bench/hectare_runs.py --write {doc}", file=sys.stderr)
+            sys.stderr.writelines(line + "\n" for line in difflib.unified_diff(
+                lines[first:end], inner, f"{doc} (lines {first + 1}-{end})", f"{args.runs.name} summarised",
+                lineterm=""))
+        if missing:
+            failed = True
+            report_unquoted(doc, missing, args.runs.name)
+        else:
+            print(f"{doc}: its goal tables quote the summary as {args.runs.name} gives it ({len(QUOTATIONS)} places)")
+        return 1 if failed else 0
     lines[first:end] = inner
     temporary = doc.with_name(doc.name + ".tmp")
     temporary.write_text("\n".join(lines), encoding="utf-8")
     temporary.replace(doc)
+    # the summary is written; the goal tables' words are the writer's to change, so they are only named here
+    report_unquoted(doc, missing, args.runs.name)
     return 0
 
 
