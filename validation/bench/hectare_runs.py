@@ -235,6 +235,11 @@ def in_words(number):
     return spaced(number)
 
 
+def runs_in_words(number):
+    """"one run", "twenty runs": a count of runs as the prose writes it."""
+    return f"{in_words(number)} run{'' if number == 1 else 's'}"
+
+
 # Each quotation of the summary in docs/performance.md's goal tables: where it is, and what it must read, made from
 # the figures of all kept runs (a) and of the latest kernels' runs (t, "today's kernels").
 QUOTATIONS = [
@@ -244,13 +249,13 @@ QUOTATIONS = [
     ("the front goal table's hectare verdict", lambda a, t: f"({t['under']} of {t['runs']} runs;"),
     ("the front goal table's memory row", lambda a, t: f"| … and < 8 GiB | {a['peaks']} |"),
     ("\"The goal table in full\"'s paragraph", lambda a, t:
-        f"it came under its line in {in_words(t['under'])} run{'' if t['under'] == 1 else 's'} of "
-        f"{in_words(t['runs'])} (a median of {t['median']} s, {t['of_line']} of the line)"),
+        f"it came under its line in {runs_in_words(t['under'])} of {in_words(t['runs'])} (a median of "
+        f"{t['median']} s, {t['of_line']} of the line)"),
     ("\"The goal table in full\"'s hectare row", lambda a, t:
         f"**{a['walls']}** in {a['runs']} runs ({a['under']} under the line); with today's kernels {t['walls']}, a "
         f"median of {t['median']} s, {t['under']} of {t['runs']} under"),
     ("\"The goal table in full\"'s hectare verdict", lambda a, t:
-        f"**yes on the family-26 EPYC in {in_words(a['under'])} runs of {a['runs']}** ("),
+        f"**yes on the family-26 EPYC in {runs_in_words(a['under'])} of {a['runs']}** ("),
     ("\"The goal table in full\"'s hectare verdict", lambda a, t:
         f"{in_words(t['under'])} of {t['runs']} with today's kernels"),
     ("\"The goal table in full\"'s hectare verdict", lambda a, t: f"and **no** in {in_words(a['runs'] - a['under'])};"),
