@@ -191,21 +191,22 @@ def row_of(label, runs):
     return f"| {label} | {f['runs']} | {f['under']} | {f['median']} s ({f['of_line']}) | {f['walls']} | {f['peaks']} |"
 
 
-def kept_and_generations(runs):
-    """The runs that grew the same tables, and their kernel generations in the order they first ran."""
+def kept_runs(runs):
+    """The runs that grew the same tables, their kernel generations in the order they first ran, and the runs of the
+    latest generation ("today's kernels")."""
     kept = [r for r in runs if r["same_tables"]]
-    return kept, list(dict.fromkeys(r["kernels"] for r in kept))
+    generations = list(dict.fromkeys(r["kernels"] for r in kept))
+    return kept, generations, [r for r in kept if r["kernels"] == generations[-1]]
 
 
 def summary(runs):
-    kept, generations = kept_and_generations(runs)
+    kept, generations, latest = kept_runs(runs)
     lines = ["| kernels | runs | under 10 min | median (of the line) | quickest–slowest | peak memory |",
              "|---|---:|---:|---:|---:|---:|"]
     for kernels in generations:
         lines.append(row_of(kernels, [r for r in kept if r["kernels"] == kernels]))
     if len(generations) > 1:
         lines.append(row_of("all", kept))
-    latest = [r for r in kept if r["kernels"] == generations[-1]]
     lines += ["", f"With the latest kernels ({generations[-1]}), machine by machine:", "",
               "| machine started (UTC) | runs | under 10 min | median (of the line) | quickest–slowest "
               "| peak memory |",
@@ -271,8 +272,8 @@ def unquoted(runs, text):
     """The quotations the doc's text does not hold as the runs give them: (where, what it should read). Prose is
     wrapped, so the text is read with its line breaks as spaces."""
     flat = " ".join(text.split("\n"))
-    kept, generations = kept_and_generations(runs)
-    every, today = figures_of(kept), figures_of([r for r in kept if r["kernels"] == generations[-1]])
+    kept, _, latest = kept_runs(runs)
+    every, today = figures_of(kept), figures_of(latest)
     return [(where, quote) for where, quote in ((w, q(every, today)) for w, q in QUOTATIONS) if quote not in flat]
 
 
