@@ -48,19 +48,21 @@ set(HECTARE_RUNS ${PROJECT_SOURCE_DIR}/validation/bench/hectare_runs.py)
 set(HECTARE_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/hectare_runs)
 add_test(NAME docs.hectare_runs_summary_matches_the_runs
          COMMAND ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
-# docs.hectare_runs_NAME: the script on the fixture exits with STATUS and prints what OUTPUT_REGEX matches; the
-# arguments after it are the script's, besides the fixture's sections.md.
-function(add_hectare_runs_fixture_test name status output_regex)
-  add_test(NAME docs.hectare_runs_${name}
+# docs.RUNS_NAME: validation/bench/RUNS.py on the fixture tests/docs/RUNS exits with STATUS and prints what
+# OUTPUT_REGEX matches; the arguments after it are the script's, besides the fixture's sections.md.
+function(add_runs_fixture_test runs name status output_regex)
+  set(fixture ${PROJECT_SOURCE_DIR}/tests/docs/${runs})
+  add_test(NAME docs.${runs}_${name}
            COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=${status} "-DEXPECT_OUTPUT=${output_regex}"
                    -P ${PROJECT_SOURCE_DIR}/tests/expect_exit_and_output.cmake
-                   ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --sections ${HECTARE_RUNS_FIXTURE}/sections.md ${ARGN})
-  set_tests_properties(docs.hectare_runs_${name} PROPERTIES LABELS "docs" TIMEOUT 60)
+                   ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/validation/bench/${runs}.py
+                   --sections ${fixture}/sections.md ${ARGN})
+  set_tests_properties(docs.${runs}_${name} PROPERTIES LABELS "docs" TIMEOUT 60)
 endfunction()
-add_hectare_runs_fixture_test(check_reports_a_stale_summary 1
+add_runs_fixture_test(hectare_runs check_reports_a_stale_summary 1
     "stale.md: its summary of the hectare's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.0 s \\(1.05\\) [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.5 s \\(1.05\\) "
     --runs ${HECTARE_RUNS_FIXTURE}/runs.csv --check ${HECTARE_RUNS_FIXTURE}/stale.md)
-add_hectare_runs_fixture_test(check_reports_an_unquoted_count 1
+add_runs_fixture_test(hectare_runs check_reports_an_unquoted_count 1
     "unquoted.md: the summary of 14 lines matches runs.csv\n.*unquoted.md: the front goal table's hectare verdict does not read \"\\(1 of 3 runs;\", as runs.csv gives it"
     --runs ${HECTARE_RUNS_FIXTURE}/runs.csv --check ${HECTARE_RUNS_FIXTURE}/unquoted.md)
 set(HECTARE_RUNS_BAD_ROWS
@@ -72,6 +74,6 @@ foreach(case IN LISTS HECTARE_RUNS_BAD_ROWS)
   string(REPLACE "|" ";" case "${case}")
   list(GET case 0 name)
   list(GET case 1 message)
-  add_hectare_runs_fixture_test(rejects_${name} 2 "^[^\n]*${message}" --runs ${HECTARE_RUNS_FIXTURE}/${name}.csv)
+  add_runs_fixture_test(hectare_runs rejects_${name} 2 "^[^\n]*${message}" --runs ${HECTARE_RUNS_FIXTURE}/${name}.csv)
 endforeach()
 set_tests_properties(docs.hectare_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
