@@ -77,3 +77,31 @@ foreach(case IN LISTS HECTARE_RUNS_BAD_ROWS)
   add_runs_fixture_test(hectare_runs rejects_${name} 2 "^[^\n]*${message}" --runs ${HECTARE_RUNS_FIXTURE}/${name}.csv)
 endforeach()
 set_tests_properties(docs.hectare_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
+
+# The same for the light goal's runs ("Every light goal run on two cores"): validation/bench/light_runs.py makes the
+# summary of validation/bench/light_runs.csv, and the goal tables' light rows quote its counts of first solves over
+# the line. On the fixture in tests/docs/light_runs: a summary with one machine's median out of date is reported with
+# the line that differs, a goal table's count one run behind with the words it should read, and rows that cannot be
+# runs (a size that is not the goal's, later solves apart by a comma, a kernel cache neither warm nor empty) are errors
+# naming the file, line and field.
+set(LIGHT_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/light_runs)
+add_test(NAME docs.light_runs_summary_matches_the_runs
+         COMMAND ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/validation/bench/light_runs.py
+                 --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
+set_tests_properties(docs.light_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
+add_runs_fixture_test(light_runs check_reports_a_stale_summary 1
+    "stale.md: its summary of the light goal's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.078 s [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.016 s "
+    --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/stale.md)
+add_runs_fixture_test(light_runs check_reports_an_unquoted_count 1
+    "unquoted.md: the summary of 19 lines matches runs.csv\n.*unquoted.md: the front goal table's 10⁵ light row does not read \"one of two on the one started 2026-12-02 08:00\\)\", as runs.csv gives it"
+    --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/unquoted.md)
+set(LIGHT_RUNS_BAD_ROWS
+    "bad_balls|bad_balls.csv:3: field 'balls': '10000' is not a size of the light goal"
+    "bad_later|bad_later.csv:2: field 'later_s': '0.62,' is not a number of seconds"
+    "bad_cache|bad_cache.csv:2: field 'kernel_cache': 'cold' is not one of warm, empty")
+foreach(case IN LISTS LIGHT_RUNS_BAD_ROWS)
+  string(REPLACE "|" ";" case "${case}")
+  list(GET case 0 name)
+  list(GET case 1 message)
+  add_runs_fixture_test(light_runs rejects_${name} 2 "^[^\n]*${message}" --runs ${LIGHT_RUNS_FIXTURE}/${name}.csv)
+endforeach()

@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""Every run of issue 16's light goal on two cores, summarised (10⁶ leaf balls in ≤ 10 s, 10⁵ in ≤ 1 s).
+
+The light goal's command (`heliostand bench light --balls 100000 --balls 1000000 ... --evaluations 3`,
+docs/performance.md "Measuring again") times a solver's first solve, which lays out its tables and fetches its kernels,
+and two later ones. A first solve's time moves with the hour and the machine, so whether it meets its line is a count
+over runs. The runs are rows of validation/bench/light_runs.csv, one a size of one run of the command, in the order
+they ran:
+
+    date, time_utc        when the command ran (UTC; time empty where its section did not record it)
+    machine_started       when the machine it ran on was started ("YYYY-MM-DD HH:MM" UTC), empty where not recorded
+    code                  the commit the binary was built from
+    variant               empty for that commit's own code; otherwise what was changed or set for the run
+    kernels               which generation of the light kernels it ran, as in hectare_runs.csv
+    kernel_cache          "warm", or "empty" where PoCL compiled the kernels in the first solve
+    balls                 100000 or 1000000
+    first_s               the first solve's seconds, setup included
+    later_s               the later solves' seconds, apart by a space (empty where the section gives only a range)
+    section               the section of docs/performance.md that has the run, its command and its context
+
+The variants, measured beside a commit's own code for their time, are counted apart from it: some (malloc's huge pages)
+move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables: the first and later solves of each size, kernel generation, own code or variant and
+kernel cache (how many, how many over the line, the median, the quickest and slowest), and the commits' own first solves
+into a warm cache with the latest kernels machine by machine. The goal tables quote it (QUOTATIONS below), and --check
+asks that they read as the runs give it.
+
+    validation/bench/light_runs.py                         print the summary
+    validation/bench/light_runs.py --write docs/performance.md
+                                                           put it between the doc's two marker lines
+    validation/bench/light_runs.py --check docs/performance.md
+                                                           exit 1 if the doc's lines differ from it, or a quotation
+                                                           of it in the goal tables does (CTest runs this)
+
+A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
+error naming the file, line and field: exit 2, and nothing is written.
+"""
+import pathlib
+import statistics
+import sys
+import textwrap
+
+from runs_file import BadRow, Summary, arguments, commit, exit_status, field_of, in_words, machine_start, not_empty, \
+    one_of, parse_date, positive, read_rows, start_time
+
+HERE = pathlib.Path(__file__).resolve().parent
+GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
+SIZES = {100000: "10⁵", 1000000: "10⁶"}
+BEGIN = "<!-- validation/bench/light_runs.py writes the lines below from validation/bench/light_runs.csv -->"
+END = "<!-- end of validation/bench/light_runs.py's lines -->"
+SUMMARY = Summary(BEGIN, END, "the light goal's runs")
+COLUMNS = ["date", "time_utc", "machine_started", "code", "variant", "kernels", "kernel_cache", "balls", "first_s",
+           "later_s", "section"]
+
+
+def balls(text):
+    if text not in ("100000", "1000000"):
+        raise BadRow(f"'{text}' is not a size of the light goal (100000 or 1000000)")
+    return int(text)
+
+
+def solve(text):
+    """A solve's seconds as written (the docs keep the digits measured: 0.91, 1.092), and as a number."""
+    return text, positive(text, float, "seconds")
+
+
+def later_solves(text):
+    return [solve(t) for t in text.split()]
+
+
+def read_run(row, section):
+    """One row as a run; raises BadRow(field, reason) for the first field that cannot be one."""
+    return {
+        "date": field_of(row, "date", lambda t: parse_date(t, "%Y-%m-%d")),
+        "time": field_of(row, "time_utc", start_time),
+        "machine_started": field_of(row, "machine_started", machine_start),
+        "code": field_of(row, "code", commit),
+        "variant": field_of(row, "variant", str),
+        "kernels": field_of(row, "kernels", not_empty),
+        "kernel_cache": field_of(row, "kernel_cache", one_of("warm", "empty")),
+        "balls": field_of(row, "balls", balls),
+        "first": field_of(row, "first_s", solve),
+        "later": field_of(row, "later_s", later_solves),
+        "section": field_of(row, "section", section),
+    }
+
+
+def seconds(value):
+    """Three decimals, as the light rows write a solve (1.092 s; a median of an even count rounded to them)."""
+    return f"{value:.3f}"
+
+
+def figures_of(solves, size):
+    """How many solves, how many over the size's line, the median (and its share of the line), the quickest and the
+    slowest as written, and the range of those over the line as shares of it."""
+    line = GOAL_SECONDS[size]
+    ordered = sorted(solves, key=lambda s: s[1])
+    over = [s for s in ordered if s[1] > line]
+    if not ordered:
+        return {"solves": 0, "over": 0, "median": "—", "of_line": "—", "range": "—", "over_range": "—"}
+    median = statistics.median(s[1] for s in ordered)
+    return {"solves": len(ordered), "over": len(over), "median": seconds(median), "of_line": f"{median / line:.2f}",
+            "range": f"{ordered[0][0]}–{ordered[-1][0]} s" if len(ordered) > 1 else f"{ordered[0][0]} s",
+            "over_range": "—" if not over else (f"{over[0][1] / line:.2f}–{over[-1][1] / line:.2f}×"
+                                                if len(over) > 1 else f"{over[0][1] / line:.2f}×")}
+
+
+def firsts(runs):
+    return [r["first"] for r in runs]
+
+
+def laters(runs):
+    return [s for r in runs for s in r["later"]]
+
+
+def generations_of(runs):
+    """The kernel generations in the order they first ran, and the runs of the latest ("today's kernels")."""
+    generations = list(dict.fromkeys(r["kernels"] for r in runs))
+    return generations, [r for r in runs if r["kernels"] == generations[-1]]
+
+
+OWN, VARIANTS = "the commit's own code", "variants beside it"
+
+
+def of_code(runs, which):
+    """The runs of the commits' own code, or of the variants measured beside them."""
+    return [r for r in runs if bool(r["variant"]) == (which == VARIANTS)]
+
+
+def summary(runs):
+    generations, latest = generations_of(runs)
+    lines = ["| balls | kernels | code | kernel cache | first solves | over the line | median (of the line) "
+             "| quickest–slowest | later solves given one by one | over the line | quickest–slowest |",
+             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for size in SIZES:
+        for kernels in generations:
+            for which in (OWN, VARIANTS):
+                for cache in ("warm", "empty"):
+                    group = [r for r in of_code(runs, which)
+                             if r["balls"] == size and r["kernels"] == kernels and r["kernel_cache"] == cache]
+                    if group:
+                        f, g = figures_of(firsts(group), size), figures_of(laters(group), size)
+                        lines.append(f"| {SIZES[size]} | {kernels} | {which} | {cache} | {f['solves']} | {f['over']} "
+                                     f"| {f['median']} s ({f['of_line']}) | {f['range']} | {g['solves']} | "
+                                     f"{g['over']} | {g['range']} |")
+    lines += [""] + textwrap.wrap(f"First solves of the commits' own code into a warm kernel cache with the latest "
+                                  f"kernels ({generations[-1]}), machine by machine:", 120) + ["",
+              "| machine started (UTC) | 10⁵: first solves | over 1 s | median | quickest–slowest "
+              "| 10⁶: first solves | over 10 s | median | quickest–slowest |",
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
+    for started in dict.fromkeys(r["machine_started"] for r in warm):
+        machine = [r for r in warm if r["machine_started"] == started]
+        days = sorted({r["date"].strftime("%Y-%m-%d") for r in machine})
+        label = started or "not recorded (runs of " + (days[0] if len(days) == 1 else f"{days[0]} to {days[-1]}") + ")"
+        cells = []
+        for size in SIZES:
+            f = figures_of(firsts([r for r in machine if r["balls"] == size]), size)
+            cells += [str(f["solves"]), str(f["over"]), f"{f['median']} s" if f["solves"] else "—", f["range"]]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines += ["", f"{len(runs)} rows in the file, a size of one run of the command each; "
+              f"{len(of_code(runs, VARIANTS))} of them a variant's."]
+    return lines
+
+
+def of_runs(number):
+    """"43 runs", "1 run": a count of runs in digits, as the goal tables write the larger counts."""
+    return f"{number} run{'' if number == 1 else 's'}"
+
+
+# Each quotation of the summary in docs/performance.md's goal tables: where it is, and what it must read, made from
+# the figures of the commits' own first solves into a warm cache with the latest kernels, at 10⁵ (f5) and 10⁶ (f6), and
+# of those at 10⁵ on the latest machine (m5, started at `started`).
+QUOTATIONS = [
+    ("the front goal table's 10⁵ light row", lambda f5, f6, m5, started:
+        f"first 10⁵ solve into a warm kernel cache over its line in {in_words(f5['over'])} of {of_runs(f5['solves'])} "
+        f"with today's kernels (median {f5['median']} s;"),
+    ("the front goal table's 10⁵ light row", lambda f5, f6, m5, started:
+        f"{in_words(m5['over'])} of {in_words(m5['solves'])} on the one started {started})"),
+    ("the front goal table's 10⁶ light row", lambda f5, f6, m5, started:
+        f"first 10⁶ solve over its line in {in_words(f6['over'])} of {of_runs(f6['solves'])}"),
+]
+
+
+def quotations(runs):
+    """Each of QUOTATIONS as (where, what it must read) for these runs."""
+    _, latest = generations_of(runs)
+    warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
+    started = warm[-1]["machine_started"]
+    f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
+    m5 = figures_of(firsts([r for r in warm if r["balls"] == 100000 and r["machine_started"] == started]), 100000)
+    return [(where, quote(f5, f6, m5, started)) for where, quote in QUOTATIONS]
+
+
+def run(args):
+    runs = read_rows(args.runs, args.sections, COLUMNS, read_run)
+    return SUMMARY.write_or_check(args, summary(runs), quotations(runs), "validation/bench/light_runs.py")
+
+
+def main():
+    return exit_status(run, arguments(__doc__.split("\n")[0], HERE / "light_runs.csv",
+                                      HERE.parent.parent / "docs" / "performance.md"))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
