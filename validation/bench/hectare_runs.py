@@ -145,6 +145,11 @@ QUOTATIONS = [
         f"{a['runs']} runs that grew the same tables, each a row of `validation/bench/hectare_runs.csv`"),
     ("the detailed goal table's hectare row", lambda a, t:
         f"**{a['walls']}, {a['peaks']} peak**; with today's kernels {t['walls']}, a median of **{t['median']} s**"),
+    ("the detailed goal table's hectare verdict", lambda a, t:
+        f"**yes on the family-26 EPYC** in {counted(a['under'], 'run')} of {a['runs']} ("),
+    ("the detailed goal table's hectare verdict", lambda a, t:
+        f"in {in_words(t['under'])} of {t['runs']} with floor and ceil as instructions), **no** in "
+        f"{in_words(a['runs'] - a['under'])}:"),
 ]
 
 
