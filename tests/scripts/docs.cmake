@@ -59,23 +59,28 @@ function(add_runs_fixture_test runs name status output_regex)
                    --sections ${fixture}/sections.md ${ARGN})
   set_tests_properties(docs.${runs}_${name} PROPERTIES LABELS "docs" TIMEOUT 60)
 endfunction()
+# docs.RUNS_rejects_NAME for each "NAME|MESSAGE" after RUNS: the script on the fixture's NAME.csv exits with 2 and its
+# first line of output matches MESSAGE.
+function(add_runs_bad_row_tests runs)
+  foreach(case IN LISTS ARGN)
+    string(REPLACE "|" ";" case "${case}")
+    list(GET case 0 name)
+    list(GET case 1 message)
+    add_runs_fixture_test(${runs} rejects_${name} 2 "^[^\n]*${message}"
+                          --runs ${PROJECT_SOURCE_DIR}/tests/docs/${runs}/${name}.csv)
+  endforeach()
+endfunction()
 add_runs_fixture_test(hectare_runs check_reports_a_stale_summary 1
     "stale.md: its summary of the hectare's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.0 s \\(1.05\\) [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 0 \\| 630.5 s \\(1.05\\) "
     --runs ${HECTARE_RUNS_FIXTURE}/runs.csv --check ${HECTARE_RUNS_FIXTURE}/stale.md)
 add_runs_fixture_test(hectare_runs check_reports_an_unquoted_count 1
     "unquoted.md: the summary of 14 lines matches runs.csv\n.*unquoted.md: the front goal table's hectare verdict does not read \"\\(1 of 3 runs;\", as runs.csv gives it"
     --runs ${HECTARE_RUNS_FIXTURE}/runs.csv --check ${HECTARE_RUNS_FIXTURE}/unquoted.md)
-set(HECTARE_RUNS_BAD_ROWS
+add_runs_bad_row_tests(hectare_runs
     "bad_wall|bad_wall.csv:3: field 'wall_s': -580.0 seconds is not a positive, finite amount"
     "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
     "no_section|no_section.csv:3: field 'section': [^\n]*sections.md has no section \"A slow hour\""
     "short_row|short_row.csv:3: field 'peak_mib': missing")
-foreach(case IN LISTS HECTARE_RUNS_BAD_ROWS)
-  string(REPLACE "|" ";" case "${case}")
-  list(GET case 0 name)
-  list(GET case 1 message)
-  add_runs_fixture_test(hectare_runs rejects_${name} 2 "^[^\n]*${message}" --runs ${HECTARE_RUNS_FIXTURE}/${name}.csv)
-endforeach()
 set_tests_properties(docs.hectare_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
 
 # The same for the light goal's runs ("Every light goal run on two cores"): validation/bench/light_runs.py makes the
@@ -95,13 +100,7 @@ add_runs_fixture_test(light_runs check_reports_a_stale_summary 1
 add_runs_fixture_test(light_runs check_reports_an_unquoted_count 1
     "unquoted.md: the summary of 19 lines matches runs.csv\n.*unquoted.md: the front goal table's 10⁵ light row does not read \"one of two on the one started 2026-12-02 08:00\\)\", as runs.csv gives it"
     --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/unquoted.md)
-set(LIGHT_RUNS_BAD_ROWS
+add_runs_bad_row_tests(light_runs
     "bad_balls|bad_balls.csv:3: field 'balls': '10000' is not a size of the light goal"
     "bad_later|bad_later.csv:2: field 'later_s': '0.62,' is not a number of seconds"
     "bad_cache|bad_cache.csv:2: field 'kernel_cache': 'cold' is not one of warm, empty")
-foreach(case IN LISTS LIGHT_RUNS_BAD_ROWS)
-  string(REPLACE "|" ";" case "${case}")
-  list(GET case 0 name)
-  list(GET case 1 message)
-  add_runs_fixture_test(light_runs rejects_${name} 2 "^[^\n]*${message}" --runs ${LIGHT_RUNS_FIXTURE}/${name}.csv)
-endforeach()

@@ -36,14 +36,12 @@ fails as well: the message gives the sentence to write.
 A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
 error naming the file, line and field: exit 2, and nothing is written.
 """
-import pathlib
 import statistics
 import sys
 
-from runs_file import Summary, arguments, commit, counted, exit_status, field_of, in_words, machine_start, not_empty, \
+from runs_file import Summary, command, commit, counted, field_of, in_words, machine_start, not_empty, \
     one_of, parse_date, positive, read_rows, spaced, start_time
 
-HERE = pathlib.Path(__file__).resolve().parent
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
 END = "<!-- end of validation/bench/hectare_runs.py's lines -->"
@@ -160,15 +158,5 @@ def quotations(runs):
     return [(where, quote(every, today)) for where, quote in QUOTATIONS]
 
 
-def run(args):
-    runs = read_rows(args.runs, args.sections, COLUMNS, read_run)
-    return SUMMARY.write_or_check(args, summary(runs), quotations(runs), "validation/bench/hectare_runs.py")
-
-
-def main():
-    return exit_status(run, arguments(__doc__.split("\n")[0], HERE / "hectare_runs.csv",
-                                      HERE.parent.parent / "docs" / "performance.md"))
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(command(__doc__, "hectare_runs.csv", COLUMNS, read_run, summary, quotations, SUMMARY))

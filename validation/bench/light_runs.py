@@ -34,15 +34,13 @@ asks that they read as the runs give it.
 A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
 error naming the file, line and field: exit 2, and nothing is written.
 """
-import pathlib
 import statistics
 import sys
 import textwrap
 
-from runs_file import BadRow, Summary, arguments, commit, exit_status, field_of, in_words, machine_start, not_empty, \
+from runs_file import BadRow, Summary, command, commit, field_of, in_words, machine_start, not_empty, \
     one_of, parse_date, positive, read_rows, start_time
 
-HERE = pathlib.Path(__file__).resolve().parent
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
 BEGIN = "<!-- validation/bench/light_runs.py writes the lines below from validation/bench/light_runs.csv -->"
@@ -191,15 +189,5 @@ def quotations(runs):
     return [(where, quote(f5, f6, m5, started)) for where, quote in QUOTATIONS]
 
 
-def run(args):
-    runs = read_rows(args.runs, args.sections, COLUMNS, read_run)
-    return SUMMARY.write_or_check(args, summary(runs), quotations(runs), "validation/bench/light_runs.py")
-
-
-def main():
-    return exit_status(run, arguments(__doc__.split("\n")[0], HERE / "light_runs.csv",
-                                      HERE.parent.parent / "docs" / "performance.md"))
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(command(__doc__, "light_runs.csv", COLUMNS, read_run, summary, quotations, SUMMARY))

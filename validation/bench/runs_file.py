@@ -239,3 +239,16 @@ def arguments(description, runs, docs):
     action.add_argument("--write", type=pathlib.Path, metavar="DOC")
     action.add_argument("--check", type=pathlib.Path, metavar="DOC")
     return parser.parse_args()
+
+
+def command(doc, runs_name, columns, read_run, summary, quotations, summary_place):
+    """A runs script's whole command line (the exit status): the runs of validation/bench/RUNS_NAME read by read_run,
+    their summary (a list of lines) and its quotations ((where, what it must read)) printed, written or checked."""
+    here = pathlib.Path(__file__).resolve().parent
+    script = "validation/bench/" + pathlib.Path(runs_name).stem + ".py"
+
+    def run(args):
+        runs = read_rows(args.runs, args.sections, columns, read_run)
+        return summary_place.write_or_check(args, summary(runs), quotations(runs), script)
+    docs = here.parent.parent / "docs" / "performance.md"
+    return exit_status(run, arguments(doc.split("\n")[0], here / runs_name, docs))
