@@ -40,7 +40,7 @@ import statistics
 import sys
 
 from runs_file import Summary, command, commit, counted, field_of, in_words, machine_start, not_empty, \
-    one_of, parse_date, positive, read_rows, spaced, start_time
+    one_of, parse_date, positive, spaced, start_time
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"

@@ -19,9 +19,10 @@ they ran:
     section               the section of docs/performance.md that has the run, its command and its context
 
 The variants, measured beside a commit's own code for their time, are counted apart from it: some (malloc's huge pages)
-move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables: the first and later solves of each size, kernel generation, own code or variant and
-kernel cache (how many, how many over the line, the median, the quickest and slowest), and the commits' own first solves
-into a warm cache with the latest kernels machine by machine. The goal tables quote it (QUOTATIONS below), and --check
+move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables: the first and
+later solves of each size, kernel generation, own code or variant and kernel cache (how many, how many over the line,
+the median, the quickest and slowest), and the commits' own first solves into a warm cache with the latest kernels
+machine by machine. The goal tables quote it (QUOTATIONS below), and --check
 asks that they read as the runs give it.
 
     validation/bench/light_runs.py                         print the summary
@@ -39,7 +40,7 @@ import sys
 import textwrap
 
 from runs_file import BadRow, Summary, command, commit, field_of, in_words, machine_start, not_empty, \
-    one_of, parse_date, positive, read_rows, start_time
+    one_of, parse_date, positive, start_time
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
@@ -88,18 +89,16 @@ def seconds(value):
 
 
 def figures_of(solves, size):
-    """How many solves, how many over the size's line, the median (and its share of the line), the quickest and the
-    slowest as written, and the range of those over the line as shares of it."""
+    """How many solves, how many over the size's line, the median (and its share of the line), and the quickest and
+    the slowest as written."""
     line = GOAL_SECONDS[size]
     ordered = sorted(solves, key=lambda s: s[1])
-    over = [s for s in ordered if s[1] > line]
     if not ordered:
-        return {"solves": 0, "over": 0, "median": "—", "of_line": "—", "range": "—", "over_range": "—"}
+        return {"solves": 0, "over": 0, "median": "—", "of_line": "—", "range": "—"}
     median = statistics.median(s[1] for s in ordered)
-    return {"solves": len(ordered), "over": len(over), "median": seconds(median), "of_line": f"{median / line:.2f}",
-            "range": f"{ordered[0][0]}–{ordered[-1][0]} s" if len(ordered) > 1 else f"{ordered[0][0]} s",
-            "over_range": "—" if not over else (f"{over[0][1] / line:.2f}–{over[-1][1] / line:.2f}×"
-                                                if len(over) > 1 else f"{over[0][1] / line:.2f}×")}
+    return {"solves": len(ordered), "over": sum(s[1] > line for s in ordered), "median": seconds(median),
+            "of_line": f"{median / line:.2f}",
+            "range": f"{ordered[0][0]}–{ordered[-1][0]} s" if len(ordered) > 1 else f"{ordered[0][0]} s"}
 
 
 def firsts(runs):
