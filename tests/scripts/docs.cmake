@@ -44,10 +44,15 @@ set_tests_properties(docs.section_references_check_reports_the_same_outside_git 
 # tests/docs/hectare_runs: a summary one median out of date is reported with the line that differs, a goal table's
 # count one run behind with the words it should read, and rows that cannot be runs (a negative wall time, a run out
 # of order, a section the doc lacks, a field missing) are errors naming the file, line and field.
-set(HECTARE_RUNS ${PROJECT_SOURCE_DIR}/validation/bench/hectare_runs.py)
 set(HECTARE_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/hectare_runs)
-add_test(NAME docs.hectare_runs_summary_matches_the_runs
-         COMMAND ${HELIOSTAND_TEST_PYTHON} ${HECTARE_RUNS} --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
+# docs.RUNS_summary_matches_the_runs: validation/bench/RUNS.py --check on docs/performance.md itself.
+function(add_runs_summary_test runs)
+  add_test(NAME docs.${runs}_summary_matches_the_runs
+           COMMAND ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/validation/bench/${runs}.py
+                   --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
+  set_tests_properties(docs.${runs}_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
+endfunction()
+add_runs_summary_test(hectare_runs)
 # docs.RUNS_NAME: validation/bench/RUNS.py on the fixture tests/docs/RUNS exits with STATUS and prints what
 # OUTPUT_REGEX matches; the arguments after it are the script's, besides the fixture's sections.md.
 function(add_runs_fixture_test runs name status output_regex)
@@ -81,7 +86,6 @@ add_runs_bad_row_tests(hectare_runs
     "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
     "no_section|no_section.csv:3: field 'section': [^\n]*sections.md has no section \"A slow hour\""
     "short_row|short_row.csv:3: field 'peak_mib': missing")
-set_tests_properties(docs.hectare_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
 
 # The same for the light goal's runs ("Every light goal run on two cores"): validation/bench/light_runs.py makes the
 # summary of validation/bench/light_runs.csv, and the goal tables' light rows quote its counts of first solves over
@@ -90,10 +94,7 @@ set_tests_properties(docs.hectare_runs_summary_matches_the_runs PROPERTIES LABEL
 # runs (a size that is not the goal's, later solves apart by a comma, a kernel cache neither warm nor empty) are errors
 # naming the file, line and field.
 set(LIGHT_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/light_runs)
-add_test(NAME docs.light_runs_summary_matches_the_runs
-         COMMAND ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/validation/bench/light_runs.py
-                 --check ${PROJECT_SOURCE_DIR}/docs/performance.md)
-set_tests_properties(docs.light_runs_summary_matches_the_runs PROPERTIES LABELS "docs" TIMEOUT 60)
+add_runs_summary_test(light_runs)
 add_runs_fixture_test(light_runs check_reports_a_stale_summary 1
     "stale.md: its summary of the light goal's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.078 s [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.016 s "
     --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/stale.md)

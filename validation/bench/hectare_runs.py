@@ -26,21 +26,13 @@ counts, the ranges); --check also asks that each of those quotations (QUOTATIONS
 that a run added to the file fails until the goal tables say so too. A doc whose goal tables word a figure otherwise
 fails as well: the message gives the sentence to write.
 
-    validation/bench/hectare_runs.py                       print the summary
-    validation/bench/hectare_runs.py --write docs/performance.md
-                                                           put it between the doc's two marker lines
-    validation/bench/hectare_runs.py --check docs/performance.md
-                                                           exit 1 if the doc's lines differ from it, or a quotation
-                                                           of it in the goal tables does (CTest runs this)
-
-A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
-error naming the file, line and field: exit 2, and nothing is written.
+`validation/bench/hectare_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and `--check
+docs/performance.md` checks the doc against it (CTest runs this); `--help` says more (runs_file.USAGE).
 """
 import statistics
 import sys
 
-from runs_file import Summary, command, commit, counted, field_of, in_words, machine_start, not_empty, \
-    one_of, parse_date, positive, spaced, start_time
+from runs_file import Summary, command, counted, field_of, in_words, one_of, positive, spaced, when_and_what
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
@@ -52,12 +44,7 @@ COLUMNS = ["date", "time_utc", "machine_started", "code", "variant", "kernels", 
 
 def read_run(row, section):
     """One row as a run; raises BadRow(field, reason) for the first field that cannot be one."""
-    return {
-        "date": field_of(row, "date", lambda t: parse_date(t, "%Y-%m-%d")),
-        "time": field_of(row, "time_utc", start_time),
-        "machine_started": field_of(row, "machine_started", machine_start),
-        "code": field_of(row, "code", commit),
-        "kernels": field_of(row, "kernels", not_empty),
+    return when_and_what(row) | {
         "same_tables": field_of(row, "same_tables", one_of("yes", "no")) == "yes",
         "wall_s": field_of(row, "wall_s", lambda t: positive(t, float, "seconds")),
         "peak_mib": field_of(row, "peak_mib", lambda t: positive(t, int, "MiB")),

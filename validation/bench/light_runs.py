@@ -22,25 +22,17 @@ The variants, measured beside a commit's own code for their time, are counted ap
 move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables: the first and
 later solves of each size, kernel generation, own code or variant and kernel cache (how many, how many over the line,
 the median, the quickest and slowest), and the commits' own first solves into a warm cache with the latest kernels
-machine by machine. The goal tables quote it (QUOTATIONS below), and --check
-asks that they read as the runs give it.
+machine by machine. The goal tables quote it (QUOTATIONS below), and --check asks that they read as the runs give
+it.
 
-    validation/bench/light_runs.py                         print the summary
-    validation/bench/light_runs.py --write docs/performance.md
-                                                           put it between the doc's two marker lines
-    validation/bench/light_runs.py --check docs/performance.md
-                                                           exit 1 if the doc's lines differ from it, or a quotation
-                                                           of it in the goal tables does (CTest runs this)
-
-A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
-error naming the file, line and field: exit 2, and nothing is written.
+`validation/bench/light_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and `--check
+docs/performance.md` checks the doc against it (CTest runs this); `--help` says more (runs_file.USAGE).
 """
 import statistics
 import sys
 import textwrap
 
-from runs_file import BadRow, Summary, command, commit, field_of, in_words, machine_start, not_empty, \
-    one_of, parse_date, positive, start_time
+from runs_file import BadRow, Summary, command, field_of, in_words, one_of, positive, when_and_what
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
@@ -68,13 +60,7 @@ def later_solves(text):
 
 def read_run(row, section):
     """One row as a run; raises BadRow(field, reason) for the first field that cannot be one."""
-    return {
-        "date": field_of(row, "date", lambda t: parse_date(t, "%Y-%m-%d")),
-        "time": field_of(row, "time_utc", start_time),
-        "machine_started": field_of(row, "machine_started", machine_start),
-        "code": field_of(row, "code", commit),
-        "variant": field_of(row, "variant", str),
-        "kernels": field_of(row, "kernels", not_empty),
+    return when_and_what(row) | {
         "kernel_cache": field_of(row, "kernel_cache", one_of("warm", "empty")),
         "balls": field_of(row, "balls", balls),
         "first": field_of(row, "first_s", solve),

@@ -86,6 +86,19 @@ def section_in(doc, headings):
     return check
 
 
+def when_and_what(row):
+    """The fields every runs file begins with, read: when the run started, on which machine, the commit, any variant,
+    the kernel generation."""
+    return {
+        "date": field_of(row, "date", lambda t: parse_date(t, "%Y-%m-%d")),
+        "time": field_of(row, "time_utc", start_time),
+        "machine_started": field_of(row, "machine_started", machine_start),
+        "code": field_of(row, "code", commit),
+        "variant": field_of(row, "variant", str),
+        "kernels": field_of(row, "kernels", not_empty),
+    }
+
+
 def field_of(row, name, check):
     """The value of `name` in a CSV row read by `check`; raises BadRow(field, reason) where it cannot be one."""
     if row.get(name) is None:
@@ -228,10 +241,22 @@ def exit_status(run, args):
         return 2
 
 
-def arguments(description, runs, docs):
+USAGE = """\
+    {script}                print the summary
+    {script} --write DOC    put it between DOC's two marker lines (docs/performance.md)
+    {script} --check DOC    exit 1 if DOC's lines differ from it, or a quotation of it in
+    {script_blank}                the goal tables does (CTest runs this)
+
+A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
+error naming the file, line and field: exit 2, and nothing is written."""
+
+
+def arguments(description, runs, docs, script):
     """The command line both scripts take: the runs file, the doc whose sections the runs name, and --write DOC or
-    --check DOC."""
-    parser = argparse.ArgumentParser(description=description)
+    --check DOC; --help shows what each does (USAGE)."""
+    usage = USAGE.format(script=script, script_blank=" " * len(script))
+    parser = argparse.ArgumentParser(description=description, epilog=usage,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=pathlib.Path, default=runs)
     parser.add_argument("--sections", type=pathlib.Path, default=docs,
                         help="the doc whose sections the runs name (default docs/performance.md)")
@@ -251,4 +276,4 @@ def command(doc, runs_name, columns, read_run, summary, quotations, summary_plac
         runs = read_rows(args.runs, args.sections, columns, read_run)
         return summary_place.write_or_check(args, summary(runs), quotations(runs), script)
     docs = here.parent.parent / "docs" / "performance.md"
-    return exit_status(run, arguments(doc.split("\n")[0], here / runs_name, docs))
+    return exit_status(run, arguments(doc.split("\n")[0], here / runs_name, docs, script))
