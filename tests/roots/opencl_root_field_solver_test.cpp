@@ -1,8 +1,8 @@
 // The OpenCL root-contact field against the reference on grown root systems of several trees (float on
 // the device, double in the reference). Stated tolerance: per apex, the same number of contacts and
 // every component of Vt within 1e-3 (a sum of up to ~100 unit vectors in float) and of Vw within 1e-4
-// (16 probes of moisture ≤ 1). Apices with a segment within 1e-4 m of the sphere's surface are left out
-// of the contact comparison: there float and double may legitimately disagree on "inside".
+// (16 probes of moisture ≤ 1). An apex with a segment within 1e-5 m of its sphere's surface (or 1e-6 m of the
+// touching distance) may disagree on contacts: there float and double may legitimately disagree on "inside".
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +38,33 @@ std::unique_ptr<RootFieldSolver> make_opencl_or_null() {
   return device ? make_root_field_solver(*device) : nullptr;
 }
 
+// Every apex's answer the reference's within the stated tolerances, but where a segment lies on the edge of its sphere
+// (there only the moisture pull, which no edge moves, must agree); nearly every apex compared, and half of those with
+// contacts (the comparison is not vacuous).
+void expect_the_reference_within_tolerance(const std::vector<RootFieldSample>& actual,
+                                           const std::vector<RootFieldSample>& expected,
+                                           std::span<const RootTipQuery> tips,
+                                           std::span<const RootSegmentLine> segments) {
+  ASSERT_EQ(actual.size(), expected.size());
+  int compared = 0, with_contacts = 0;
+  for (std::size_t t = 0; t < tips.size(); ++t) {
+    for (int axis = 0; axis < 3; ++axis)
+      ASSERT_NEAR(actual[t].moisture_pull[axis], expected[t].moisture_pull[axis], 1e-4) << "apex " << t;
+    bool agree = actual[t].contacts == expected[t].contacts;
+    for (int axis = 0; axis < 3; ++axis)
+      agree = agree && std::abs(actual[t].contact_avoidance[axis] - expected[t].contact_avoidance[axis]) <= 1e-3;
+    if (!agree) {
+      ASSERT_TRUE(on_the_edge(tips[t], segments))
+          << "apex " << t << ": " << actual[t].contacts << " contacts, the reference " << expected[t].contacts;
+      continue;
+    }
+    ++compared;
+    if (expected[t].contacts > 0) ++with_contacts;
+  }
+  EXPECT_GT(compared, static_cast<int>(0.99 * tips.size()));
+  EXPECT_GT(with_contacts, compared / 2);
+}
+
 // Every apex's answer the same, bit for bit, and a quarter of them with contacts (the comparison is not vacuous).
 void expect_the_same_bit_for_bit(const std::vector<RootFieldSample>& actual, const std::vector<RootFieldSample>& alone) {
   ASSERT_EQ(actual.size(), alone.size());
@@ -64,23 +91,7 @@ TEST(OpenCLRootFieldSolver, MatchesTheReferenceOnGrownRootSystems) {
     const std::vector<RootTipQuery>& tips = queries.tips;
     ASSERT_GT(tips.size(), 500u);
     const RootFieldInput input = queries.input(stand.soil);
-    const auto expected = reference.solve(input);
-    const auto actual = opencl->solve(input);
-    ASSERT_EQ(actual.size(), expected.size());
-
-    int compared = 0, with_contacts = 0;
-    for (std::size_t t = 0; t < tips.size(); ++t) {
-      for (int axis = 0; axis < 3; ++axis)
-        ASSERT_NEAR(actual[t].moisture_pull[axis], expected[t].moisture_pull[axis], 1e-4) << "apex " << t;
-      if (on_the_edge(tips[t], segments.lines)) continue;
-      ++compared;
-      if (expected[t].contacts > 0) ++with_contacts;
-      ASSERT_EQ(actual[t].contacts, expected[t].contacts) << "apex " << t;
-      for (int axis = 0; axis < 3; ++axis)
-        ASSERT_NEAR(actual[t].contact_avoidance[axis], expected[t].contact_avoidance[axis], 1e-3) << "apex " << t;
-    }
-    EXPECT_GT(compared, static_cast<int>(0.99 * tips.size()));
-    EXPECT_GT(with_contacts, compared / 2);  // the comparison is not vacuous
+    expect_the_reference_within_tolerance(opencl->solve(input), reference.solve(input), tips, segments.lines);
   }
 }
 
@@ -195,26 +206,7 @@ TEST(OpenCLRootFieldSolver, SegmentsWrittenInPartsAnswerAsTheReferenceDoes) {
   for (std::size_t t = 0; t < tips.size(); ++t)
     for (const glm::dvec3& probe : draw_moisture_probes(random, probes_per_tip)) probes.push_back(probe);
   const RootFieldInput input{segments, tips, probes, probes_per_tip, &soil};
-  const auto expected = ReferenceRootFieldSolver().solve(input);
-  const auto actual = opencl->solve(input);
-  ASSERT_EQ(actual.size(), expected.size());
-  int compared = 0, with_contacts = 0;
-  for (std::size_t t = 0; t < tips.size(); ++t) {
-    for (int axis = 0; axis < 3; ++axis)
-      ASSERT_NEAR(actual[t].moisture_pull[axis], expected[t].moisture_pull[axis], 1e-4) << "apex " << t;
-    bool agree = actual[t].contacts == expected[t].contacts;
-    for (int axis = 0; axis < 3; ++axis)
-      agree = agree && std::abs(actual[t].contact_avoidance[axis] - expected[t].contact_avoidance[axis]) <= 1e-3;
-    if (!agree) {
-      ASSERT_TRUE(on_the_edge(tips[t], segments))
-          << "apex " << t << ": " << actual[t].contacts << " contacts, the reference " << expected[t].contacts;
-      continue;
-    }
-    ++compared;
-    if (expected[t].contacts > 0) ++with_contacts;
-  }
-  EXPECT_GT(compared, static_cast<int>(0.99 * tips.size()));
-  EXPECT_GT(with_contacts, compared / 2);  // the comparison is not vacuous
+  expect_the_reference_within_tolerance(opencl->solve(input), ReferenceRootFieldSolver().solve(input), tips, segments);
 }
 
 }  // namespace
