@@ -76,7 +76,7 @@ void print_summary(const Scenario& scenario) {
              scenario.stand.age_at_survey_years, scenario.final_age_years(), scenario.run.years,
              scenario.run.seed, scenario.run.output_interval_years);
   for (const auto& event : scenario.thinning)
-    fmt::print("thinning   {}: {} ({}{})\n", when_text(event), event.reason, thinning_method_name(event.method),
+    fmt::print("thinning   {}: {} ({}{})\n", when_text(event), event.reason, thinning_method_name(event.rule.method),
                event.protect_habitat_trees ? "" : ", habitat trees not protected");
   std::vector<std::string> habitat;
   std::size_t hollows = 0;

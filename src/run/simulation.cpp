@@ -35,11 +35,8 @@ std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
                    [](const ThinningEvent* a, const ThinningEvent* b) { return a->scenario_order < b->scenario_order; });
   std::vector<ScheduledThinning> events;
   for (const ThinningEvent* event : in_file_order)
-    events.push_back({event->age_years,
-                      ThinningRule{event->method, event->ids, event->target_stems_per_ha,
-                                   event->target_basal_area_m2_per_ha, event->remove_fraction,
-                                   event->remove_basal_area_fraction, event->crop_trees, event->dbh_class, event->rows},
-                      event->reason, event->protect_habitat_trees, event->condition, event->repeat_every_years});
+    events.push_back({event->age_years, event->rule, event->reason, event->protect_habitat_trees, event->condition,
+                      event->repeat_every_years});
   return events;
 }
 

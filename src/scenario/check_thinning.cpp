@@ -30,22 +30,23 @@ std::vector<std::size_t> chronological_order(const std::vector<ThinningEvent>& e
   return order;
 }
 
-void check_rows(const ThinningEvent& event, const Keys& keys, const Survey& survey, ScenarioProblems& problems) {
+void check_rows(const RowSettings& rows, const Keys& keys, const Survey& survey, ScenarioProblems& problems) {
   std::vector<glm::dvec2> positions;
   for (const auto& tree : survey.trees) positions.push_back({tree.x_m, tree.y_m});
-  const PlantingRowsFound found = find_planting_rows(positions, event.rows.azimuth_deg, event.rows.tolerance_m);
+  const PlantingRowsFound found = find_planting_rows(positions, rows.azimuth_deg, rows.tolerance_m);
   if (!found.rows) {
     problems.add(keys.method_line, keys.path + ".method",
                  fmt::format("method \"rows\" finds no planting rows in the survey's positions: {}", found.problem));
-  } else if (event.rows.first_row > found.rows->count) {
+  } else if (rows.first_row > found.rows->count) {
     problems.add(keys.first_row_line, keys.path + ".first_row",
                  fmt::format("row {} is beyond the last of the survey's {} planting rows (along {:.1f}°)",
-                             event.rows.first_row, found.rows->count, found.rows->azimuth_deg));
+                             rows.first_row, found.rows->count, found.rows->azimuth_deg));
   }
 }
 
-void check_crop_tree_count(const ThinningEvent& event, const Keys& keys, double area_ha, ScenarioProblems& problems) {
-  const double wanted = event.crop_trees.crop_trees_per_ha;
+void check_crop_tree_count(const CropTreeSettings& crop_trees, const Keys& keys, double area_ha,
+                           ScenarioProblems& problems) {
+  const double wanted = crop_trees.crop_trees_per_ha;
   if (!(wanted > 0) || trees_kept_for_stem_target(wanted, area_ha) >= 1) return;  // a missing key is reported already
   problems.add(keys.crop_trees_line, keys.path + ".crop_trees_per_ha",
                fmt::format("{:g} crop trees/ha on {:g} ha is less than one crop tree (floor of {:.2f})",
@@ -73,13 +74,14 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
 
   for (std::size_t index : order) {
     const ThinningEvent& event = events[index];
+    const ThinningRule& rule = event.rule;
     const auto& keys = draft.thinning_keys[index];
     // Age 0: its "when" was not valid (reported already); nothing is known about when it happens.
     const bool fixed_age = event.at_fixed_age() && event.age_years > 0;
-    const bool by_size = event.method == ThinningMethod::from_below || event.method == ThinningMethod::from_above ||
-                         event.method == ThinningMethod::neutral;
-    if (event.method == ThinningMethod::ids) {
-      for (const auto& id : event.ids) {
+    const bool by_size = rule.method == ThinningMethod::from_below || rule.method == ThinningMethod::from_above ||
+                         rule.method == ThinningMethod::neutral;
+    if (rule.method == ThinningMethod::ids) {
+      for (const auto& id : rule.ids) {
         if (!surveyed.count(id)) {
           problems.add(keys.ids_line, keys.path + ".ids", fmt::format("tree id \"{}\" is not in the survey", id));
         } else if (event.protect_habitat_trees && habitat.count(id)) {
@@ -95,8 +97,8 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
           max_stems_per_ha -= 1.0 / area_ha;
         }
       }
-    } else if (event.target_stems_per_ha && fixed_age && by_size) {
-      const double target = *event.target_stems_per_ha;
+    } else if (rule.target_stems_per_ha && fixed_age && by_size) {
+      const double target = *rule.target_stems_per_ha;
       if (target >= max_stems_per_ha - 1e-9) {
         problems.add(keys.target_line, keys.path + ".target_stems_per_ha",
                      fmt::format("target {:g} stems/ha is not below the stand's density at that age (at most {:.1f} "
@@ -106,8 +108,8 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
         max_stems_per_ha = target;
       }
     }
-    if (event.method == ThinningMethod::rows) check_rows(event, keys, survey, problems);
-    if (event.method == ThinningMethod::crop_tree) check_crop_tree_count(event, keys, area_ha, problems);
+    if (rule.method == ThinningMethod::rows) check_rows(rule.rows, keys, survey, problems);
+    if (rule.method == ThinningMethod::crop_tree) check_crop_tree_count(rule.crop_trees, keys, area_ha, problems);
   }
   std::vector<ThinningEvent> sorted;
   for (std::size_t index : order) sorted.push_back(std::move(events[index]));

@@ -117,11 +117,12 @@ std::vector<std::string> read_ids(TomlTableReader& reader) {
 
 constexpr NumberRange fraction{0.0, 1.0, true, false};  // (0, 1]
 
-void read_size_targets(TomlTableReader& reader, ThinningEvent& event) {
-  event.target_stems_per_ha = reader.number("target_stems_per_ha", positive_up_to(limit::stems_per_ha));
-  event.target_basal_area_m2_per_ha = reader.number("target_basal_area_m2_per_ha", positive_up_to(limit::basal_area_m2_per_ha));
-  event.remove_fraction = reader.number("remove_fraction", fraction);
-  event.remove_basal_area_fraction = reader.number("remove_basal_area_fraction", fraction);
+void read_size_targets(TomlTableReader& reader, ThinningRule& rule) {
+  rule.target_stems_per_ha = reader.number("target_stems_per_ha", positive_up_to(limit::stems_per_ha));
+  rule.target_basal_area_m2_per_ha =
+      reader.number("target_basal_area_m2_per_ha", positive_up_to(limit::basal_area_m2_per_ha));
+  rule.remove_fraction = reader.number("remove_fraction", fraction);
+  rule.remove_basal_area_fraction = reader.number("remove_basal_area_fraction", fraction);
 }
 
 void read_crop_tree_keys(TomlTableReader& reader, const ScenarioDraft& draft, CropTreeSettings& crop_trees) {
@@ -204,11 +205,11 @@ void parse_thinning_event(const toml::table& table, const std::string& path, Sce
     method = method_named(*name);
     if (!method) reader.problem("method", fmt::format("expected {}, got \"{}\"", method_choices(), *name));
   }
-  event.ids = read_ids(reader);
-  read_size_targets(reader, event);
-  read_crop_tree_keys(reader, draft, event.crop_trees);
-  read_dbh_class_keys(reader, event.dbh_class);
-  read_row_keys(reader, event.rows);
+  event.rule.ids = read_ids(reader);
+  read_size_targets(reader, event.rule);
+  read_crop_tree_keys(reader, draft, event.rule.crop_trees);
+  read_dbh_class_keys(reader, event.rule.dbh_class);
+  read_row_keys(reader, event.rule.rows);
   if (auto reason = reader.string("reason")) event.reason = *reason;
   if (auto protect = reader.boolean("protect_habitat_trees")) event.protect_habitat_trees = *protect;
   reader.report_unknown_keys();
@@ -217,7 +218,7 @@ void parse_thinning_event(const toml::table& table, const std::string& path, Sce
     check_method_keys(reader, *method);
     if (is_size_method(*method)) check_one_size_target(reader, *method, path);
     if (*method == ThinningMethod::dbh_class) check_dbh_class_bounds(reader);
-    event.method = *method;
+    event.rule.method = *method;
   }
   draft.thinning_keys.push_back(key_lines(reader, path));
   draft.scenario.thinning.push_back(std::move(event));

@@ -57,13 +57,9 @@ struct RowSettings {
   double tolerance_m = 1.0;           // a row is a band at most this wide across its direction
 };
 
-struct ThinningEvent {
-  // When: a fixed stand age, or a condition of the living stand checked every year (then age_years is 0).
-  int age_years = 0;
-  std::optional<StandCondition> condition;
-  std::optional<int> repeat_every_years;  // fires again at the earliest this many years after it fired
-  // What: the method and its parameters.
-  ThinningMethod method = ThinningMethod::ids;
+// Which trees a thinning removes: the method and its parameters (stand/thinning.hpp chooses them).
+struct ThinningRule {
+  ThinningMethod method = ThinningMethod::from_below;
   std::vector<std::string> ids;                      // method ids: survey ids of the trees to remove
   std::optional<double> target_stems_per_ha;         // from_below / from_above / neutral: exactly one target
   std::optional<double> target_basal_area_m2_per_ha;
@@ -72,6 +68,14 @@ struct ThinningEvent {
   CropTreeSettings crop_trees;
   DbhClass dbh_class;
   RowSettings rows;
+};
+
+struct ThinningEvent {
+  // When: a fixed stand age, or a condition of the living stand checked every year (then age_years is 0).
+  int age_years = 0;
+  std::optional<StandCondition> condition;
+  std::optional<int> repeat_every_years;  // fires again at the earliest this many years after it fired
+  ThinningRule rule;                                 // what: the method and its parameters
   std::string reason = "thinning";                   // label carried into the removal outputs
   bool protect_habitat_trees = true;                 // trees with hollows are never removed by this event
   int line = 0;                                      // scenario line of the [[thinning]] header

@@ -15,21 +15,9 @@
 
 #include "geometry/neighbourhood.hpp"     // StandEdges
 #include "records/stand_metrics.hpp"       // basal_area_m2, which the targets are stated in
-#include "scenario/thinning_event.hpp"  // ThinningMethod and the regimes' settings
+#include "scenario/thinning_event.hpp"  // ThinningRule: the method and the regimes' settings
 
 namespace heliostand {
-
-struct ThinningRule {
-  ThinningMethod method = ThinningMethod::from_below;
-  std::vector<std::string> ids;                     // with ThinningMethod::ids: survey labels to remove
-  std::optional<double> target_stems_per_ha;        // from_below / from_above / neutral: exactly one target
-  std::optional<double> target_basal_area_m2_per_ha;
-  std::optional<double> remove_fraction;            // of the living stems (of the class, for dbh_class)
-  std::optional<double> remove_basal_area_fraction; // of the living basal area
-  CropTreeSettings crop_trees;
-  DbhClass dbh_class;
-  RowSettings rows;
-};
 
 // A living tree as thinning sees it.
 struct ThinningCandidate {

@@ -142,14 +142,14 @@ TEST(LoadScenario, ThinningEventsAreSortedByAgeAndIdsMayBeIntegers) {
   const Scenario s = load_scenario(file);
   ASSERT_EQ(s.thinning.size(), 2u);
   EXPECT_EQ(s.thinning[0].age_years, 22);
-  EXPECT_EQ(s.thinning[0].method, ThinningMethod::ids);
-  EXPECT_THAT(s.thinning[0].ids, ::testing::ElementsAre("2", "3"));
+  EXPECT_EQ(s.thinning[0].rule.method, ThinningMethod::ids);
+  EXPECT_THAT(s.thinning[0].rule.ids, ::testing::ElementsAre("2", "3"));
   EXPECT_EQ(s.thinning[0].reason, "crop-tree release");
   EXPECT_EQ(s.thinning[0].line, 15);  // its [[thinning]] header
   EXPECT_EQ(s.thinning[1].age_years, 28);
-  EXPECT_EQ(s.thinning[1].method, ThinningMethod::from_above);
-  EXPECT_EQ(s.thinning[1].target_basal_area_m2_per_ha, 20.0);
-  EXPECT_FALSE(s.thinning[1].target_stems_per_ha);
+  EXPECT_EQ(s.thinning[1].rule.method, ThinningMethod::from_above);
+  EXPECT_EQ(s.thinning[1].rule.target_basal_area_m2_per_ha, 20.0);
+  EXPECT_FALSE(s.thinning[1].rule.target_stems_per_ha);
   EXPECT_EQ(s.thinning[1].reason, "thinning");
 }
 
@@ -190,8 +190,8 @@ TEST(ExampleStands, SobetsuLoadsWithItsThirtyTreeThinning) {
   EXPECT_TRUE(s.light.periodic);
   ASSERT_EQ(s.thinning.size(), 2u);
   // 62 trees -> keep 47 (15 removed) -> keep 32 (15 removed): 30 in all.
-  const int first_kept = trees_kept_for_stem_target(*s.thinning[0].target_stems_per_ha, s.plot_area_ha());
-  const int second_kept = trees_kept_for_stem_target(*s.thinning[1].target_stems_per_ha, s.plot_area_ha());
+  const int first_kept = trees_kept_for_stem_target(*s.thinning[0].rule.target_stems_per_ha, s.plot_area_ha());
+  const int second_kept = trees_kept_for_stem_target(*s.thinning[1].rule.target_stems_per_ha, s.plot_area_ha());
   EXPECT_EQ(62 - first_kept, 15);
   EXPECT_EQ(first_kept - second_kept, 15);
   // The survey stays within the documented ranges of a 35-year Todomatsu plantation.
@@ -212,7 +212,7 @@ TEST(ExampleStands, TinyLoads) {
   EXPECT_EQ(s.survey.trees.size(), 8u);
   EXPECT_EQ(s.run.years, 5);
   ASSERT_EQ(s.thinning.size(), 1u);
-  EXPECT_THAT(s.thinning[0].ids, ::testing::ElementsAre("4"));
+  EXPECT_THAT(s.thinning[0].rule.ids, ::testing::ElementsAre("4"));
 }
 
 TEST(DeviceChoice, ParsesEveryFormAndPrintsItBack) {

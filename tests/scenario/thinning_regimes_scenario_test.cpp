@@ -48,41 +48,41 @@ TEST(ThinningRegimesScenario, EveryRegimeAndTriggerIsRead) {
   ASSERT_EQ(s.thinning.size(), 4u);
   // Fixed ages first, by age; then the triggered events in file order. scenario_order keeps the file's order.
   const ThinningEvent& rows = s.thinning[0];
-  EXPECT_EQ(rows.method, ThinningMethod::rows);
+  EXPECT_EQ(rows.rule.method, ThinningMethod::rows);
   EXPECT_EQ(rows.age_years, 22);
   EXPECT_EQ(rows.scenario_order, 3);
-  EXPECT_EQ(rows.rows.interval, 2);
-  EXPECT_EQ(rows.rows.first_row, 1);
-  EXPECT_EQ(rows.rows.azimuth_deg, 0.0);
-  EXPECT_EQ(rows.rows.tolerance_m, 1.0);
+  EXPECT_EQ(rows.rule.rows.interval, 2);
+  EXPECT_EQ(rows.rule.rows.first_row, 1);
+  EXPECT_EQ(rows.rule.rows.azimuth_deg, 0.0);
+  EXPECT_EQ(rows.rule.rows.tolerance_m, 1.0);
   EXPECT_FALSE(rows.repeat_every_years);
 
   const ThinningEvent& crop = s.thinning[1];
-  EXPECT_EQ(crop.method, ThinningMethod::crop_tree);
+  EXPECT_EQ(crop.rule.method, ThinningMethod::crop_tree);
   EXPECT_EQ(crop.scenario_order, 1);
-  EXPECT_EQ(crop.crop_trees.crop_trees_per_ha, 200.0);
-  EXPECT_EQ(crop.crop_trees.spacing_m, 4.0);
-  EXPECT_EQ(crop.crop_trees.competitor_radius_m, 5.0);  // the [competition] radius
-  EXPECT_EQ(crop.crop_trees.competitors_per_crop_tree, 2);
+  EXPECT_EQ(crop.rule.crop_trees.crop_trees_per_ha, 200.0);
+  EXPECT_EQ(crop.rule.crop_trees.spacing_m, 4.0);
+  EXPECT_EQ(crop.rule.crop_trees.competitor_radius_m, 5.0);  // the [competition] radius
+  EXPECT_EQ(crop.rule.crop_trees.competitors_per_crop_tree, 2);
 
   const ThinningEvent& neutral = s.thinning[2];
-  EXPECT_EQ(neutral.method, ThinningMethod::neutral);
+  EXPECT_EQ(neutral.rule.method, ThinningMethod::neutral);
   EXPECT_EQ(neutral.scenario_order, 0);
   EXPECT_FALSE(neutral.at_fixed_age());
   ASSERT_TRUE(neutral.condition);
   EXPECT_EQ(neutral.condition->measure, Measure::basal_area_m2_per_ha);
   EXPECT_EQ(neutral.condition->threshold, 40.0);
   EXPECT_EQ(neutral.repeat_every_years, 5);  // repeat = true: the default interval
-  EXPECT_EQ(neutral.remove_basal_area_fraction, 0.3);
+  EXPECT_EQ(neutral.rule.remove_basal_area_fraction, 0.3);
 
   const ThinningEvent& by_class = s.thinning[3];
-  EXPECT_EQ(by_class.method, ThinningMethod::dbh_class);
+  EXPECT_EQ(by_class.rule.method, ThinningMethod::dbh_class);
   EXPECT_EQ(by_class.condition->measure, Measure::top_height_m);
   EXPECT_EQ(by_class.condition->threshold, 12.0);
   EXPECT_EQ(by_class.repeat_every_years, 3);
-  EXPECT_EQ(by_class.dbh_class.min_cm, 0.0);
-  EXPECT_EQ(by_class.dbh_class.max_cm, 12.0);
-  EXPECT_EQ(by_class.remove_fraction, 0.5);
+  EXPECT_EQ(by_class.rule.dbh_class.min_cm, 0.0);
+  EXPECT_EQ(by_class.rule.dbh_class.max_cm, 12.0);
+  EXPECT_EQ(by_class.rule.remove_fraction, 0.5);
 }
 
 TEST(ThinningRegimesScenario, TriggeredEventsAreNotBoundToTheRunsAges) {
