@@ -19,18 +19,18 @@ namespace heliostand::cli {
 namespace {
 
 // "age 40", "age 40, then every 5 years", "when basal area > 40 m2/ha, again after 5 years or more".
-std::string when_text(const ThinningEvent& event) {
+std::string when_text(const ThinningTrigger& trigger) {
   std::string when;
-  if (event.at_fixed_age()) {
-    when = fmt::format("age {}", event.age_years);
-  } else if (event.condition->measure == StandCondition::Measure::basal_area_m2_per_ha) {
-    when = fmt::format("when basal area > {:g} m2/ha", event.condition->threshold);
+  if (trigger.at_fixed_age()) {
+    when = fmt::format("age {}", trigger.stand_age);
+  } else if (trigger.condition->measure == StandCondition::Measure::basal_area_m2_per_ha) {
+    when = fmt::format("when basal area > {:g} m2/ha", trigger.condition->threshold);
   } else {
-    when = fmt::format("when top height >= {:g} m", event.condition->threshold);
+    when = fmt::format("when top height >= {:g} m", trigger.condition->threshold);
   }
-  if (event.repeat_every_years)
-    when += event.at_fixed_age() ? fmt::format(", then every {} years", *event.repeat_every_years)
-                                 : fmt::format(", again after {} years or more", *event.repeat_every_years);
+  if (trigger.repeat_every_years)
+    when += trigger.at_fixed_age() ? fmt::format(", then every {} years", *trigger.repeat_every_years)
+                                   : fmt::format(", again after {} years or more", *trigger.repeat_every_years);
   return when;
 }
 
@@ -76,7 +76,8 @@ void print_summary(const Scenario& scenario) {
              scenario.stand.age_at_survey_years, scenario.final_age_years(), scenario.run.years,
              scenario.run.seed, scenario.run.output_interval_years);
   for (const auto& event : scenario.thinning)
-    fmt::print("thinning   {}: {} ({}{})\n", when_text(event), event.reason, thinning_method_name(event.rule.method),
+    fmt::print("thinning   {}: {} ({}{})\n", when_text(event.when), event.reason,
+               thinning_method_name(event.rule.method),
                event.protect_habitat_trees ? "" : ", habitat trees not protected");
   std::vector<std::string> habitat;
   std::size_t hollows = 0;

@@ -28,16 +28,11 @@ namespace heliostand {
 namespace {
 
 // In the scenario's order: the events that fire in one year are applied as the file lists them.
-std::vector<ScheduledThinning> schedule(const Scenario& scenario) {
-  std::vector<const ThinningEvent*> in_file_order;
-  for (const auto& event : scenario.thinning) in_file_order.push_back(&event);
+std::vector<ThinningEvent> schedule(const Scenario& scenario) {
+  std::vector<ThinningEvent> in_file_order = scenario.thinning;
   std::stable_sort(in_file_order.begin(), in_file_order.end(),
-                   [](const ThinningEvent* a, const ThinningEvent* b) { return a->scenario_order < b->scenario_order; });
-  std::vector<ScheduledThinning> events;
-  for (const ThinningEvent* event : in_file_order)
-    events.push_back({event->age_years, event->rule, event->reason, event->protect_habitat_trees, event->condition,
-                      event->repeat_every_years});
-  return events;
+                   [](const ThinningEvent& a, const ThinningEvent& b) { return a.scenario_order < b.scenario_order; });
+  return in_file_order;
 }
 
 // Competitors are counted across periodic edges when light is (the plot a tile of a larger plantation), over the

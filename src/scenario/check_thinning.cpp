@@ -24,7 +24,7 @@ std::vector<std::size_t> chronological_order(const std::vector<ThinningEvent>& e
   std::vector<std::size_t> order(events.size());
   std::iota(order.begin(), order.end(), 0);
   auto age = [&](std::size_t k) {
-    return events[k].at_fixed_age() ? events[k].age_years : std::numeric_limits<int>::max();
+    return events[k].when.at_fixed_age() ? events[k].when.stand_age : std::numeric_limits<int>::max();
   };
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return age(a) < age(b); });
   return order;
@@ -77,7 +77,7 @@ void check_thinning_against_survey(ScenarioDraft& draft, ScenarioProblems& probl
     const ThinningRule& rule = event.rule;
     const auto& keys = draft.thinning_keys[index];
     // Age 0: its "when" was not valid (reported already); nothing is known about when it happens.
-    const bool fixed_age = event.at_fixed_age() && event.age_years > 0;
+    const bool fixed_age = event.when.at_fixed_age() && event.when.stand_age > 0;
     const bool by_size = rule.method == ThinningMethod::from_below || rule.method == ThinningMethod::from_above ||
                          rule.method == ThinningMethod::neutral;
     if (rule.method == ThinningMethod::ids) {

@@ -98,10 +98,10 @@ void Scenario::set_years(int years) {
   if (years < 1) problems.push_back({label, 0, "run.years", fmt::format("--years must be at least 1, got {}", years)});
   const int final_age = stand.age_at_survey_years + years;
   for (const auto& event : thinning) {
-    if (event.at_fixed_age() && event.age_years > final_age) {
+    if (event.when.at_fixed_age() && event.when.stand_age > final_age) {
       problems.push_back({label, event.line, "run.years",
                           fmt::format("--years {} ends the run at stand age {}, before the thinning at age {}", years,
-                                      final_age, event.age_years)});
+                                      final_age, event.when.stand_age)});
     }
   }
   const int before = run.years;

@@ -199,7 +199,7 @@ void parse_thinning_event(const toml::table& table, const std::string& path, Sce
   event.line = reader.line();
   event.scenario_order = static_cast<int>(draft.scenario.thinning.size());
 
-  read_thinning_when(reader, draft, event);
+  read_thinning_when(reader, draft, event.when);
   std::optional<ThinningMethod> method;
   if (auto name = reader.string("method", true)) {
     method = method_named(*name);

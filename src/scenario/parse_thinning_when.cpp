@@ -33,21 +33,21 @@ void check_age(TomlTableReader& reader, const ScenarioDraft& draft, int age) {
   }
 }
 
-void read_repetition(TomlTableReader& reader, ThinningEvent& event) {
+void read_repetition(TomlTableReader& reader, ThinningTrigger& when) {
   const auto repeat = reader.boolean("repeat");
   const auto every = reader.integer("repeat_every_years", from_up_to(1, limit::tree_lifetime));
   if (repeat == false && reader.table().contains("repeat_every_years")) {
     reader.problem("repeat_every_years", "not used with repeat = false (remove one of the two)");
   } else if (every) {
-    event.repeat_every_years = static_cast<int>(*every);
+    when.repeat_every_years = static_cast<int>(*every);
   } else if (repeat == true) {
-    event.repeat_every_years = default_repeat_interval_years;
+    when.repeat_every_years = default_repeat_interval_years;
   }
 }
 
 }  // namespace
 
-void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningEvent& event) {
+void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningTrigger& when) {
   std::vector<std::string_view> given;
   for (auto key : when_keys)
     if (reader.table().contains(key)) given.push_back(key);
@@ -57,18 +57,18 @@ void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, Thi
                           "when_basal_area_exceeds_m2_per_ha or when_top_height_reaches_m)");
 
   if (auto age = reader.integer("age", from_up_to(1, limit::tree_lifetime))) {
-    event.age_years = static_cast<int>(*age);
-    check_age(reader, draft, event.age_years);
+    when.stand_age = static_cast<int>(*age);
+    check_age(reader, draft, when.stand_age);
   }
   if (auto threshold = reader.number("when_basal_area_exceeds_m2_per_ha", positive_up_to(limit::basal_area_m2_per_ha)))
-    event.condition = StandCondition{StandCondition::Measure::basal_area_m2_per_ha, *threshold};
+    when.condition = StandCondition{StandCondition::Measure::basal_area_m2_per_ha, *threshold};
   if (auto threshold = reader.number("when_top_height_reaches_m", positive_up_to(limit::tree_height)))
-    event.condition = StandCondition{StandCondition::Measure::top_height_m, *threshold};
+    when.condition = StandCondition{StandCondition::Measure::top_height_m, *threshold};
   if (given.size() > 1)
     reader.problem(given[1], fmt::format("a thinning happens at an age or on one condition: give one of age, "
                                          "when_basal_area_exceeds_m2_per_ha and when_top_height_reaches_m, got {}",
                                          fmt::join(given, " and ")));
-  read_repetition(reader, event);
+  read_repetition(reader, when);
 }
 
 }  // namespace heliostand::scenario_detail

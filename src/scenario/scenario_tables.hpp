@@ -64,7 +64,7 @@ void parse_light(const toml::node* node, ScenarioDraft& draft, ScenarioProblems&
 void parse_competition(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 void parse_thinning(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);
 // The "when" of one [[thinning]] (parse_thinning_when.cpp): age, or a condition, and its repetition.
-void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningEvent& event);
+void read_thinning_when(TomlTableReader& reader, const ScenarioDraft& draft, ThinningTrigger& when);
 // Roots, soil, crown–root coupling and root pruning (parse_roots.cpp, parse_soil.cpp, parse_coupling.cpp,
 // parse_root_pruning.cpp): all fill Scenario::roots.
 void parse_roots(const toml::node* node, ScenarioDraft& draft, ScenarioProblems& problems);

@@ -70,18 +70,24 @@ struct ThinningRule {
   RowSettings rows;
 };
 
-struct ThinningEvent {
-  // When: a fixed stand age, or a condition of the living stand checked every year (then age_years is 0).
-  int age_years = 0;
+// When a thinning happens: a fixed stand age, or a condition of the living stand checked every year (then
+// stand_age is 0), optionally repeating (stand/thinning_trigger.hpp decides, year by year).
+struct ThinningTrigger {
+  int stand_age = 0;  // happens at the end of the year in which the stand reaches this age
   std::optional<StandCondition> condition;
   std::optional<int> repeat_every_years;  // fires again at the earliest this many years after it fired
-  ThinningRule rule;                                 // what: the method and its parameters
-  std::string reason = "thinning";                   // label carried into the removal outputs
-  bool protect_habitat_trees = true;                 // trees with hollows are never removed by this event
-  int line = 0;                                      // scenario line of the [[thinning]] header
-  int scenario_order = 0;                            // 0-based position among the file's [[thinning]] tables
 
   bool at_fixed_age() const { return !condition; }
+};
+
+// One [[thinning]] as the stand applies it (stand/stand.hpp), in the scenario's order.
+struct ThinningEvent {
+  ThinningTrigger when;
+  ThinningRule rule;                   // what: the method and its parameters
+  std::string reason = "thinning";     // label carried into the removal outputs, e.g. "first thinning"
+  bool protect_habitat_trees = true;   // trees with hollows are never removed by this event
+  int line = 0;                        // scenario line of the [[thinning]] header
+  int scenario_order = 0;              // 0-based position among the file's [[thinning]] tables
 };
 
 // How many trees a stems/ha target leaves on a plot: the largest count whose density does not exceed

@@ -17,7 +17,7 @@
 namespace heliostand {
 
 Stand::Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-             std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition)
+             std::vector<ThinningEvent> thinning, CompetitionNeighbourhood competition)
     : plot_area_ha_(plot_area_ha),
       stand_age_(stand_age),
       trees_(std::move(trees)),
@@ -161,10 +161,10 @@ std::vector<TreeEvent> Stand::die_of_crowding() {
 std::vector<TreeEvent> Stand::thin() {
   std::vector<TreeEvent> removed;
   for (std::size_t k = 0; k < thinning_.size(); ++k) {
-    const ScheduledThinning& event = thinning_[k];
+    const ThinningEvent& event = thinning_[k];
     // Conditions read the stand as the events before this one left it this year.
-    const StandMeasures stand = event.condition ? measures() : StandMeasures{};
-    const auto why = why_thinning_fires(event.trigger(), stand_age_, last_fired_age_[k], stand);
+    const StandMeasures stand = event.when.condition ? measures() : StandMeasures{};
+    const auto why = why_thinning_fires(event.when, stand_age_, last_fired_age_[k], stand);
     if (!why) continue;
     last_fired_age_[k] = stand_age_;
     auto events = apply(event, *why);
@@ -224,7 +224,7 @@ std::vector<int> Stand::planting_rows(const RowSettings& settings) const {
   return std::vector<int>(trees_.size(), -1);
 }
 
-std::vector<ThinningCandidate> Stand::candidates_for(const ScheduledThinning& event,
+std::vector<ThinningCandidate> Stand::candidates_for(const ThinningEvent& event,
                                                      const std::vector<std::size_t>& living) const {
   std::vector<ThinningCandidate> candidates;
   for (std::size_t i : living) {
@@ -247,7 +247,7 @@ std::vector<ThinningCandidate> Stand::candidates_for(const ScheduledThinning& ev
 
 namespace {
 
-void log_removals(int stand_age, const ScheduledThinning& event, const std::string& why,
+void log_removals(int stand_age, const ThinningEvent& event, const std::string& why,
                   const std::vector<TreeEvent>& removed, long kept_habitat_trees, double plot_area_ha) {
   double basal_area = 0, volume = 0;
   for (const auto& tree : removed) {
@@ -263,7 +263,7 @@ void log_removals(int stand_age, const ScheduledThinning& event, const std::stri
 
 }  // namespace
 
-std::vector<TreeEvent> Stand::apply(const ScheduledThinning& event, const std::string& why) {
+std::vector<TreeEvent> Stand::apply(const ThinningEvent& event, const std::string& why) {
   std::vector<std::size_t> living;
   for (std::size_t i = 0; i < trees_.size(); ++i)
     if (trees_[i].alive()) living.push_back(i);

@@ -19,17 +19,6 @@
 
 namespace heliostand {
 
-struct ScheduledThinning {
-  int stand_age = 0;      // happens at the end of the year in which the stand reaches this age (no condition)
-  ThinningRule rule;
-  std::string reason;     // label in events.csv, e.g. "first thinning"
-  bool protect_habitat_trees = true;  // trees with hollows are kept
-  std::optional<StandCondition> condition;  // instead of the age: the stand state that fires it
-  std::optional<int> repeat_every_years;    // re-arms (stand/thinning_trigger.hpp)
-
-  ThinningTrigger trigger() const { return {stand_age, condition, repeat_every_years}; }
-};
-
 // The competitors a tree counts (stand/hegyi_index.hpp): within a radius, across the plot's edges as they are.
 struct CompetitionNeighbourhood {
   double radius_m = default_competition_radius_m;
@@ -40,7 +29,7 @@ class Stand {
  public:
   // `thinning` in the order the events of one year are applied (the scenario's).
   Stand(double plot_area_ha, int stand_age, std::vector<StandTree> trees,
-        std::vector<ScheduledThinning> thinning, CompetitionNeighbourhood competition = {});
+        std::vector<ThinningEvent> thinning, CompetitionNeighbourhood competition = {});
 
   int stand_age() const { return stand_age_; }
   double plot_area_ha() const { return plot_area_ha_; }
@@ -80,8 +69,8 @@ class Stand {
  private:
   friend struct checkpoint::Access;
   StandMeasures measures() const;
-  std::vector<TreeEvent> apply(const ScheduledThinning& event, const std::string& why);
-  std::vector<ThinningCandidate> candidates_for(const ScheduledThinning& event, const std::vector<std::size_t>& living) const;
+  std::vector<TreeEvent> apply(const ThinningEvent& event, const std::string& why);
+  std::vector<ThinningCandidate> candidates_for(const ThinningEvent& event, const std::vector<std::size_t>& living) const;
   std::vector<int> planting_rows(const RowSettings& settings) const;
   std::vector<TreeEvent> die_of_crowding();
   // The tree leaves the living stand: removed by a thinning (cause thinning_cause, `reason` the scenario's) or
@@ -93,7 +82,7 @@ class Stand {
   double plot_area_ha_;
   int stand_age_;
   std::vector<StandTree> trees_;
-  std::vector<ScheduledThinning> thinning_;
+  std::vector<ThinningEvent> thinning_;
   std::vector<std::optional<int>> last_fired_age_;  // per scheduled thinning
   CompetitionNeighbourhood competition_;
 };

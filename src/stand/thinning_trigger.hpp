@@ -10,15 +10,9 @@
 #include <optional>
 #include <string>
 
-#include "scenario/thinning_event.hpp"  // StandCondition
+#include "scenario/thinning_event.hpp"  // ThinningTrigger
 
 namespace heliostand {
-
-struct ThinningTrigger {
-  int stand_age = 0;  // with no condition
-  std::optional<StandCondition> condition;
-  std::optional<int> repeat_every_years;
-};
 
 // The living stand as the conditions see it (records/stand_metrics.hpp).
 struct StandMeasures {

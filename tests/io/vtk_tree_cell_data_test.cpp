@@ -164,7 +164,7 @@ TEST(TreeCellData, AThinnedTreeIsDrawnAndMarkedInItsRemovalYearOnly) {
   trees.push_back(planted(0, "todomatsu", {2, 2, 0}));
   trees.push_back(planted(1, "karamatsu", {6, 3, 0}));
   trees.push_back(planted(2, "todomatsu", {4, 7, 0}));
-  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
+  const ThinningEvent thin_larch{{22}, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
   Stand stand(0.01, 20, std::move(trees), {thin_larch});
   LightParameters sky;
   sky.sky_bands = 4;

@@ -141,12 +141,12 @@ TEST(LoadScenario, ThinningEventsAreSortedByAgeAndIdsMayBeIntegers) {
                                                    "reason = \"crop-tree release\"\n");
   const Scenario s = load_scenario(file);
   ASSERT_EQ(s.thinning.size(), 2u);
-  EXPECT_EQ(s.thinning[0].age_years, 22);
+  EXPECT_EQ(s.thinning[0].when.stand_age, 22);
   EXPECT_EQ(s.thinning[0].rule.method, ThinningMethod::ids);
   EXPECT_THAT(s.thinning[0].rule.ids, ::testing::ElementsAre("2", "3"));
   EXPECT_EQ(s.thinning[0].reason, "crop-tree release");
   EXPECT_EQ(s.thinning[0].line, 15);  // its [[thinning]] header
-  EXPECT_EQ(s.thinning[1].age_years, 28);
+  EXPECT_EQ(s.thinning[1].when.stand_age, 28);
   EXPECT_EQ(s.thinning[1].rule.method, ThinningMethod::from_above);
   EXPECT_EQ(s.thinning[1].rule.target_basal_area_m2_per_ha, 20.0);
   EXPECT_FALSE(s.thinning[1].rule.target_stems_per_ha);

@@ -49,13 +49,13 @@ TEST(ThinningRegimesScenario, EveryRegimeAndTriggerIsRead) {
   // Fixed ages first, by age; then the triggered events in file order. scenario_order keeps the file's order.
   const ThinningEvent& rows = s.thinning[0];
   EXPECT_EQ(rows.rule.method, ThinningMethod::rows);
-  EXPECT_EQ(rows.age_years, 22);
+  EXPECT_EQ(rows.when.stand_age, 22);
   EXPECT_EQ(rows.scenario_order, 3);
   EXPECT_EQ(rows.rule.rows.interval, 2);
   EXPECT_EQ(rows.rule.rows.first_row, 1);
   EXPECT_EQ(rows.rule.rows.azimuth_deg, 0.0);
   EXPECT_EQ(rows.rule.rows.tolerance_m, 1.0);
-  EXPECT_FALSE(rows.repeat_every_years);
+  EXPECT_FALSE(rows.when.repeat_every_years);
 
   const ThinningEvent& crop = s.thinning[1];
   EXPECT_EQ(crop.rule.method, ThinningMethod::crop_tree);
@@ -68,18 +68,18 @@ TEST(ThinningRegimesScenario, EveryRegimeAndTriggerIsRead) {
   const ThinningEvent& neutral = s.thinning[2];
   EXPECT_EQ(neutral.rule.method, ThinningMethod::neutral);
   EXPECT_EQ(neutral.scenario_order, 0);
-  EXPECT_FALSE(neutral.at_fixed_age());
-  ASSERT_TRUE(neutral.condition);
-  EXPECT_EQ(neutral.condition->measure, Measure::basal_area_m2_per_ha);
-  EXPECT_EQ(neutral.condition->threshold, 40.0);
-  EXPECT_EQ(neutral.repeat_every_years, 5);  // repeat = true: the default interval
+  EXPECT_FALSE(neutral.when.at_fixed_age());
+  ASSERT_TRUE(neutral.when.condition);
+  EXPECT_EQ(neutral.when.condition->measure, Measure::basal_area_m2_per_ha);
+  EXPECT_EQ(neutral.when.condition->threshold, 40.0);
+  EXPECT_EQ(neutral.when.repeat_every_years, 5);  // repeat = true: the default interval
   EXPECT_EQ(neutral.rule.remove_basal_area_fraction, 0.3);
 
   const ThinningEvent& by_class = s.thinning[3];
   EXPECT_EQ(by_class.rule.method, ThinningMethod::dbh_class);
-  EXPECT_EQ(by_class.condition->measure, Measure::top_height_m);
-  EXPECT_EQ(by_class.condition->threshold, 12.0);
-  EXPECT_EQ(by_class.repeat_every_years, 3);
+  EXPECT_EQ(by_class.when.condition->measure, Measure::top_height_m);
+  EXPECT_EQ(by_class.when.condition->threshold, 12.0);
+  EXPECT_EQ(by_class.when.repeat_every_years, 3);
   EXPECT_EQ(by_class.rule.dbh_class.min_cm, 0.0);
   EXPECT_EQ(by_class.rule.dbh_class.max_cm, 12.0);
   EXPECT_EQ(by_class.rule.remove_fraction, 0.5);

@@ -98,8 +98,8 @@ Block grow_block(bool released) {
       trees.push_back(planted(id, {2.0 * i, 2.0 * j, 0.0}, 14));
       if ((i == 0 || i == 3 || j == 0 || j == 3)) thinned.push_back(std::to_string(id));
     }
-  std::vector<ScheduledThinning> thinning;
-  if (released) thinning.push_back({14, ThinningRule{ThinningMethod::ids, thinned, {}, {}}, "release", false});
+  std::vector<ThinningEvent> thinning;
+  if (released) thinning.push_back({{14}, ThinningRule{ThinningMethod::ids, thinned, {}, {}}, "release", false});
   Stand stand(0.0064, 14, std::move(trees), std::move(thinning));
   ReferenceLightSolver solver(finer_sky());
   StageClock clock;

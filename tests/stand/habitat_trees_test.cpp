@@ -39,7 +39,7 @@ Stand four_trees_with_a_habitat_tree(bool protect) {
   std::vector<StandTree> trees;
   for (int i = 0; i < 4; ++i) trees.push_back(planted(i, 3.0 * i, 30 - 2 * i));
   trees[3].hollows.push_back(small_hollow());
-  ScheduledThinning low{30, ThinningRule{ThinningMethod::from_below, {}, 300.0, std::nullopt}, "low thinning", protect};
+  ThinningEvent low{{30}, ThinningRule{ThinningMethod::from_below, {}, 300.0, std::nullopt}, "low thinning", protect};
   return Stand(0.01, 30, std::move(trees), {low});  // 400 stems/ha down to 300: one tree goes
 }
 

@@ -46,7 +46,7 @@ std::vector<StandTree> three_trees() {
 }
 
 Stand stand_thinning_the_larch_at_22() {
-  const ScheduledThinning thin_larch{22, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
+  const ThinningEvent thin_larch{{22}, ThinningRule{ThinningMethod::ids, {"2"}, {}, {}}, "first thinning", true};
   return Stand(0.01, 20, three_trees(), {thin_larch});
 }
 

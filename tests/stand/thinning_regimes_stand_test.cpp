@@ -49,7 +49,7 @@ std::vector<StandTree> six_rows() {
 }
 constexpr double plot_area_ha = 6.0 * 18.0 / 1e4;
 
-ScheduledThinning at_age(int age, ThinningRule rule) { return {age, std::move(rule), "test thinning", true}; }
+ThinningEvent at_age(int age, ThinningRule rule) { return {{age}, std::move(rule), "test thinning", true}; }
 
 ThinningRule rule_of(ThinningMethod method) {
   ThinningRule rule;
@@ -234,8 +234,8 @@ TEST(TriggeredThinning, FiresTheYearBasalAreaExceedsItsThresholdAndOnlyThen) {
   const double start = table_row(probe, {}).living.basal_area_m2_per_ha;
   auto low = rule_of(ThinningMethod::from_below);
   low.remove_fraction = 0.25;
-  ScheduledThinning when_dense{0, low, "low thinning", true,
-                               StandCondition{StandCondition::Measure::basal_area_m2_per_ha, start * 1.002}, std::nullopt};
+  const ThinningTrigger dense{0, StandCondition{StandCondition::Measure::basal_area_m2_per_ha, start * 1.002}};
+  ThinningEvent when_dense{dense, low, "low thinning", true};
   Stand stand(plot_area_ha, 20, six_rows(), {when_dense});
 
   ReferenceLightSolver solver(coarse_sky());
@@ -264,8 +264,8 @@ TEST(TriggeredThinning, ARepeatingTriggerFiresAgainAfterItsInterval) {
   const double top_height = table_row(probe, {}).living.top_height_m;
   auto low = rule_of(ThinningMethod::from_below);
   low.remove_fraction = 0.1;  // the tallest tree stays: the top height holds
-  ScheduledThinning when_tall{0, low, "low thinning", true,
-                              StandCondition{StandCondition::Measure::top_height_m, top_height}, 2};
+  const ThinningTrigger tall{0, StandCondition{StandCondition::Measure::top_height_m, top_height}, 2};
+  ThinningEvent when_tall{tall, low, "low thinning", true};
   Stand stand(plot_area_ha, 20, six_rows(), {when_tall});
   ReferenceLightSolver solver(coarse_sky());
   std::vector<int> fired_at;

@@ -106,7 +106,7 @@ void make_ci_sized(Scenario& scenario, FindingRun settings) {
   scenario.light.sky_bands = 8;
   scenario.light.sky_sectors = 16;
   const int end_age = scenario.stand.age_at_survey_years + settings.years;
-  std::erase_if(scenario.thinning, [&](const ThinningEvent& e) { return e.age_years > end_age; });
+  std::erase_if(scenario.thinning, [&](const ThinningEvent& e) { return e.when.stand_age > end_age; });
   scenario.set_years(settings.years);
   if (settings.seed) scenario.set_seed(*settings.seed);
 }
