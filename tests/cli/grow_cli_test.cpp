@@ -375,6 +375,43 @@ TEST(GrowCli, NegativeSeedIsBadInput) {
   expect_refused_before_output("tiny_negative_seed", "--seed -1", "--seed");
 }
 
+// A thinning on a stand condition that repeats reaches the stand as the scenario gives it. The tiny stand's eight
+// trees (7.4 to 10.1 m tall at the survey) are thinned whenever the top height is at least 1 m and three years have
+// passed: at the survey's age 20 (a thinning step runs before the first year) and at 23, of ages 20 to 25. Had the
+// condition been lost on the way, the rule would have fired on age alone (21 and 24, every three years from 0); had
+// the repetition, at 20 only. A second thinning waits for a top height of 40 m and never fires.
+TEST(GrowCli, ARepeatingThinningOnAStandConditionFiresEveryThirdYear) {
+  const auto output = scratch_folder("tiny_triggered");
+  const auto scenario =
+      write_tiny_stand_scenario(scratch_folder("tiny_triggered_input"),
+                                "[run]\nyears = 5\nseed = 7\noutput_interval = 5\n"
+                                "[light]\nsky_bands = 4\nsky_sectors = 8\n"
+                                "[roots]\nenabled = false\n"
+                                "[[thinning]]\nwhen_top_height_reaches_m = 1.0\nrepeat_every_years = 3\n"
+                                "method = \"from_below\"\nremove_fraction = 0.125\nreason = \"repeated low thinning\"\n"
+                                "[[thinning]]\nwhen_top_height_reaches_m = 40.0\nmethod = \"from_above\"\n"
+                                "remove_fraction = 0.5\nreason = \"never\"\n")
+          .string();
+
+  const auto check = run_cli("check " + scenario);
+  ASSERT_EQ(check.status, 0) << check.output;
+  EXPECT_NE(check.output.find("thinning   when top height >= 1 m, again after 3 years or more: repeated low thinning "
+                              "(from_below)"),
+            std::string::npos)
+      << check.output;
+
+  const auto run = run_cli("grow " + scenario + " --out " + output.string() + " --device reference -q");
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::map<int, int> removed_at_age;
+  for (const auto& event : read_table(output / "events.csv")) {
+    if (event.at("event") != "removed") continue;
+    ++removed_at_age[std::stoi(event.at("stand_age"))];
+    EXPECT_EQ(event.at("reason"), "repeated low thinning");
+  }
+  // An eighth of the living stems, rounded: one tree of 8 and one of 7.
+  EXPECT_EQ(removed_at_age, (std::map<int, int>{{20, 1}, {23, 1}}));
+}
+
 TEST(CheckCli, GoodScenarioPrintsASummary) {
   const auto run = run_cli("check " + source_path("stands/sobetsu/scenario.toml").string());
   EXPECT_EQ(run.status, 0) << run.output;

@@ -17,15 +17,12 @@ namespace fs = std::filesystem;
 
 // The tiny stand (8 trees, a thinning at age 23) with roots and soil on, 6 years under a coarse sky: ~1 s a year.
 inline fs::path write_resumable_scenario(const fs::path& folder) {
-  fs::create_directories(folder);
-  fs::copy_file(source_path("stands/tiny/survey.csv"), folder / "survey.csv");
-  std::ofstream(folder / "scenario.toml")
-      << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-         "[run]\nyears = 6\nseed = 7\noutput_interval = 1\n"
-         "[light]\nsky_bands = 4\nsky_sectors = 8\n"
-         "[soil]\nnutrient = 0.5\n"
-         "[[thinning]]\nage = 23\nmethod = \"ids\"\nids = [\"4\"]\nreason = \"test removal\"\n";
-  return folder / "scenario.toml";
+  return write_tiny_stand_scenario(folder,
+                                   "[run]\nyears = 6\nseed = 7\noutput_interval = 1\n"
+                                   "[light]\nsky_bands = 4\nsky_sectors = 8\n"
+                                   "[soil]\nnutrient = 0.5\n"
+                                   "[[thinning]]\nage = 23\nmethod = \"ids\"\nids = [\"4\"]\n"
+                                   "reason = \"test removal\"\n");
 }
 
 // Every file under `folder` (hidden ones too), by relative path, with its bytes; run.json without its timings and
