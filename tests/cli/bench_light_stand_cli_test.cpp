@@ -9,6 +9,7 @@
 #include "compute/device_choice.hpp"
 #include "scenario/scenario.hpp"
 #include "stand/establishment.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -34,14 +35,11 @@ double mean_abs_error(const nlohmann::json& row, const char* solver) {
   return row.at(solver).at("error_vs_reference_exact").at("mean_abs_light").get<double>();
 }
 
-// The trees of stands/tiny on its 10 m plot with a coarse sky and the given [light] lines after it (from line 9 on).
-fs::path tiny_scenario(const fs::path& file, const std::string& light_lines) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string()
-                      << "\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-                         "[run]\nyears = 1\n[light]\nsky_bands = 8\nsky_sectors = 16\n"
-                      << light_lines;
-  return file;
+// The trees of stands/tiny on its 10 m plot, a scenario in `folder` with a coarse sky and the given [light] lines
+// after it (from line 13 on).
+fs::path tiny_scenario(const fs::path& folder, const std::string& light_lines) {
+  return write_tiny_stand_scenario(folder,
+                                   "[run]\nyears = 1\n[light]\nsky_bands = 8\nsky_sectors = 16\n" + light_lines);
 }
 
 // Only the reference solvers on a few balls: enough to see the parameters a row used.
@@ -88,8 +86,8 @@ TEST(BenchLightStandCli, RowIsTheEstablishedStandLitByEverySolver) {
 TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
   const fs::path folder = scratch_folder("bench-light-stand-flags");
   // its own cut-off, 5 m, not the command's default (3 m): which value a row used shows
-  const fs::path scenario = tiny_scenario(
-      folder / "scenario.toml", "cutoff_m = 5.0\nfar_field_hand_over_cells = 0.5\nfar_field_table_mb = 256\n");
+  const fs::path scenario =
+      tiny_scenario(folder, "cutoff_m = 5.0\nfar_field_hand_over_cells = 0.5\nfar_field_table_mb = 256\n");
 
   const BenchRun own = bench_light(folder / "own", "--stand " + scenario.string() + parameters_only);
   ASSERT_EQ(own.cli.status, 0) << own.cli.output;
@@ -127,7 +125,7 @@ TEST(BenchLightStandCli, GivenFlagsOverrideTheScenario) {
 // and the file was not valid JSON.
 TEST(BenchLightStandCli, AScenarioPathNotInUtf8StillGivesValidJson) {
   const fs::path folder = scratch_folder("bench-light-stand-latin1");
-  const fs::path scenario = tiny_scenario(folder / "caf\xe9" / "scenario.toml", "");
+  const fs::path scenario = tiny_scenario(folder / "caf\xe9", "");
   const BenchRun bench = bench_light(folder / "out", "--stand '" + scenario.string() + "'" + parameters_only);
   ASSERT_EQ(bench.cli.status, 0) << bench.cli.output;
   EXPECT_EQ(bench.json.at("stands").at(0).at("stand"), (folder / "caf\xef\xbf\xbd" / "scenario.toml").string());
@@ -144,7 +142,7 @@ TEST(BenchLightStandCli, BadScenarioIsRefusedBeforeAnyJson) {
   EXPECT_NE(absent.output.find(missing.string()), std::string::npos) << absent.output;
   EXPECT_FALSE(fs::exists(json)) << "no JSON file";
 
-  const fs::path bad = tiny_scenario(folder / "bad.toml", "cutoff_m = -1.0\n");
+  const fs::path bad = tiny_scenario(folder / "bad", "cutoff_m = -1.0\n");
   const CliResult refused =
       run_cli("bench light --balls 200 --stand " + bad.string() + parameters_only + " -o " + json.string());
   EXPECT_EQ(refused.status, 2) << refused.output;

@@ -18,6 +18,7 @@
 #include "compute/device_choice.hpp"
 #include "io/read_multiblock.hpp"
 #include "scoped_environment.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -169,12 +170,9 @@ TEST(BenchStandCli, OpenCLReportsTheTileCandidates) {
 // three solves of two years.
 TEST(BenchStandCli, CoarsenedFarFieldIsSaidOnceAndReported) {
   const fs::path folder = scratch_folder("bench-stand-far-field-cap");
-  fs::create_directories(folder);
-  const fs::path scenario = folder / "capped.toml";
-  std::ofstream(scenario) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string()
-                          << "\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-                             "[run]\nyears = 2\nseed = 7\n"
-                             "[light]\nsky_bands = 8\nsky_sectors = 16\nfar_field_cell_m = 0.1\nfar_field_table_mb = 1\n";
+  const fs::path scenario = write_tiny_stand_scenario(
+      folder, "[run]\nyears = 2\nseed = 7\n"
+              "[light]\nsky_bands = 8\nsky_sectors = 16\nfar_field_cell_m = 0.1\nfar_field_table_mb = 1\n");
   const fs::path json = folder / "bench.json";
   const CliResult cli = run_cli("bench stand " + scenario.string() + " --device reference -o " + json.string());
   ASSERT_EQ(cli.status, 0) << cli.output;

@@ -54,18 +54,6 @@ inline const std::filesystem::path tiny_bench_stand = source_path("validation/be
 inline const std::string quick_reference_light_bench =
     "bench light --balls 300 --subsample 20 --device none --reference-culled-max 0";
 
-// A scenario in `folder` on stands/tiny's survey (copied beside it) and 10 m x 10 m plot at age 20, with
-// `after_stand` (the tables after [stand]) saying what the test grows.
-inline std::filesystem::path write_tiny_stand_scenario(const std::filesystem::path& folder,
-                                                       const std::string& after_stand) {
-  std::filesystem::create_directories(folder);
-  std::filesystem::copy_file(source_path("stands/tiny/survey.csv"), folder / "survey.csv");
-  std::ofstream(folder / "scenario.toml")
-      << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-      << after_stand;
-  return folder / "scenario.toml";
-}
-
 // A fresh, empty folder under the build tree for one test's output.
 inline std::filesystem::path scratch_folder(const std::string& name) {
   const auto path = std::filesystem::path(HELIOSTAND_BINARY_DIR) / "test-output" / name;

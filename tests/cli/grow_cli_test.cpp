@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
+#include "tiny_stand_scenario.hpp"
 #include "compute/device_choice.hpp"
 #include "io/csv_test_reader.hpp"
 #include "io/read_multiblock.hpp"

@@ -5,10 +5,10 @@
 // command line and the clock).
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <map>
 
 #include "cli/cli_runner.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -16,14 +16,10 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tiny_with_roots_file(const fs::path& folder) {
-  fs::create_directories(folder);
-  const fs::path scenario = folder / "scenario.toml";
-  std::ofstream(scenario) << "[stand]\nsurvey = \"" << source_path("stands/tiny/survey.csv").string() << "\"\n"
-                          << "age_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-                          << "[run]\nyears = 2\nseed = 7\ndetail = \"full\"\noutput_interval = 1\n"
-                          << "[light]\nsky_bands = 8\nsky_sectors = 16\n"
-                          << "[roots]\nenabled = true\n";
-  return scenario;
+  return write_tiny_stand_scenario(folder,
+                                   "[run]\nyears = 2\nseed = 7\ndetail = \"full\"\noutput_interval = 1\n"
+                                   "[light]\nsky_bands = 8\nsky_sectors = 16\n"
+                                   "[roots]\nenabled = true\n");
 }
 
 // Every file of a run folder but run.json, by its path relative to the folder.

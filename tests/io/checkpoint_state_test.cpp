@@ -6,8 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "compute/compute_backend.hpp"
 #include "io/checkpoint_codec.hpp"
 #include "io/stand_output.hpp"
@@ -18,17 +16,15 @@
 #include "stand/root_zone.hpp"
 #include "stand/stand.hpp"
 #include "stand/stand_year.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::checkpoint {
 namespace {
 namespace fs = std::filesystem;
 
 Scenario tiny_with_roots(const fs::path& folder) {
-  fs::copy_file(fs::path(HELIOSTAND_SOURCE_DIR) / "stands/tiny/survey.csv", folder / "survey.csv");
-  std::ofstream(folder / "scenario.toml")
-      << "[stand]\nsurvey = \"survey.csv\"\nage_at_survey = 20\nx_min = 0.0\ny_min = 0.0\nx_max = 10.0\ny_max = 10.0\n"
-         "[run]\nyears = 4\nseed = 7\n[light]\nsky_bands = 4\nsky_sectors = 8\n[soil]\nnutrient = 0.5\n";
-  return load_scenario(folder / "scenario.toml");
+  return load_scenario(heliostand::testing::write_tiny_stand_scenario(
+      folder, "[run]\nyears = 4\nseed = 7\n[light]\nsky_bands = 4\nsky_sectors = 8\n[soil]\nnutrient = 0.5\n"));
 }
 
 // The parts of one run over `out`: established and grown `years` years, or (years < 0) empty, for resuming.
