@@ -1,6 +1,7 @@
 // End-to-end runs of `heliostand grow` and `heliostand check` on the example stands, as a user runs them.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
 
 #include <vtkCompositeDataSet.h>
@@ -17,10 +18,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.hpp"
-#include "tiny_stand_scenario.hpp"
 #include "compute/device_choice.hpp"
 #include "io/csv_test_reader.hpp"
 #include "io/read_multiblock.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::testing {
 namespace {

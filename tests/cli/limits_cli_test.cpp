@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 
 #include "address_sanitizer.hpp"
 #include "cli/cli_runner.hpp"

@@ -7,6 +7,7 @@
 // `bench light --far-field-table-mb` gives the cap on the command line; its refusal names the flag.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 
 #include "cli/cli_runner.hpp"

@@ -2,6 +2,8 @@
 // columns of trees.csv; with [roots] enabled = false it writes neither.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
