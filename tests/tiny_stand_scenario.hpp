@@ -9,8 +9,8 @@
 namespace heliostand::testing {
 
 // A scenario in `folder` (made if missing) on stands/tiny's survey, copied beside it, with `after_stand` (the tables
-// after [stand]) saying what the test grows. [stand] takes lines 1 to 7, so `after_stand` begins at line 8 (what a
-// test of a reader's message with its line counts on).
+// after [stand]) saying what the test grows. [stand] takes lines 1 to 7, so `after_stand` begins at line 8: a test
+// of the scenario reader's message, which names the line, counts on it (bench_light_stand_cli_test).
 inline std::filesystem::path write_tiny_stand_scenario(const std::filesystem::path& folder,
                                                        const std::string& after_stand) {
   std::filesystem::create_directories(folder);
