@@ -300,20 +300,15 @@ TEST(GrowCli, AnImpossibleSurveyHeightIsBadInputNotACrash) {
 // (The default 1 m cells here: were the refusal lost, the tiny stand would grow, and this test fail, in seconds.)
 // `check` reads the same scenario as good input and says that grow refuses it here.
 TEST(GrowCli, AFarFieldTableCapBeyondTheMachineIsRefusedBeforeAnyOutput) {
-  const auto stand = scratch_folder("huge_table_stand");
-  fs::create_directories(stand);
-  std::string scenario = read_text(source_path("stands/tiny/scenario.toml"));
-  scenario.replace(scenario.find("[light]\n"), 8, "[light]\nfar_field_table_mb = 1000000\n");
-  std::ofstream(stand / "scenario.toml") << scenario;
-  fs::copy_file(source_path("stands/tiny/survey.csv"), stand / "survey.csv");
+  const auto scenario = write_tiny_stand_with_far_field_cap(scratch_folder("huge_table_stand"), 1000000);
   // check reads a scenario written for another machine as good input, and says what grow would do here
-  const auto check = run_cli("check " + (stand / "scenario.toml").string());
+  const auto check = run_cli("check " + scenario.string());
   EXPECT_EQ(check.status, 0) << check.output;
   EXPECT_NE(check.output.find("memory     about 1862.7 GiB estimated, of the "), std::string::npos) << check.output;
   EXPECT_NE(check.output.find("GiB this machine lets a run use: grow refuses it here"), std::string::npos)
       << check.output;
   const auto folder = scratch_folder("huge_table_out");
-  const auto run = run_cli("grow " + (stand / "scenario.toml").string() + " --out " + folder.string());
+  const auto run = run_cli("grow " + scenario.string() + " --out " + folder.string());
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to 1000000 MB"),
             std::string::npos)

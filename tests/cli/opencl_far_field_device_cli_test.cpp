@@ -7,11 +7,11 @@
 // `bench light --far-field-table-mb` gives the cap on the command line; its refusal names the flag.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <regex>
 
 #include "cli/cli_runner.hpp"
 #include "compute/device_choice.hpp"
+#include "tiny_stand_scenario.hpp"
 
 namespace heliostand::testing {
 namespace {
@@ -32,16 +32,9 @@ double default_device_buffer_mb() {
   return std::regex_search(devices.output, match, default_line) ? std::stod(match[1]) : -1;
 }
 
-// stands/tiny with `far_field_table_mb = cap_mb`.
-fs::path tiny_with_cap(const std::string& name, double cap_mb) {
-  const auto stand = scratch_folder(name);
-  fs::create_directories(stand);
-  std::string scenario = read_text(source_path("stands/tiny/scenario.toml"));
-  const std::string cap = "far_field_table_mb = " + std::to_string(int(cap_mb)) + "\n";
-  scenario.replace(scenario.find("[light]\n"), 8, "[light]\n" + cap);
-  std::ofstream(stand / "scenario.toml") << scenario;
-  fs::copy_file(source_path("stands/tiny/survey.csv"), stand / "survey.csv");
-  return stand / "scenario.toml";
+// stands/tiny with `far_field_table_mb = cap_mb`, in a fresh scratch folder `name`.
+fs::path tiny_with_cap(const std::string& name, int cap_mb) {
+  return write_tiny_stand_with_far_field_cap(scratch_folder(name), cap_mb);
 }
 
 TEST(FarFieldDeviceCli, GrowRefusesACapBeyondTheDeviceBeforeAnyOutput) {
@@ -82,13 +75,16 @@ TEST(FarFieldDeviceCli, BenchLightRefusesSuchAStandBeforeAnyJson) {
   if (!compute::opencl_device_exists()) GTEST_SKIP() << "no OpenCL device";
   const double buffer_mb = default_device_buffer_mb();
   ASSERT_GT(buffer_mb, 0) << run_on_small_pocl("devices").output;
-  const auto scenario = tiny_with_cap("far_field_device_bench", buffer_mb + 1);
+  const int cap = int(buffer_mb) + 1;
+  const auto scenario = tiny_with_cap("far_field_device_bench", cap);
   const auto json = scratch_folder("far_field_device_bench_out") / "light.json";
   fs::create_directories(json.parent_path());
   const auto run = run_on_small_pocl("bench light --stand " + scenario.string() + " --device opencl -o " +
                                      json.string() + " -q");
   EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to"),
+  // the scenario's cap, not the default 512 MB (which such a device cannot hold either)
+  EXPECT_NE(run.output.find("scenario.toml: key 'light.far_field_table_mb': a far-field table of up to " +
+                            std::to_string(cap) + " MB takes a buffer of up to"),
             std::string::npos)
       << run.output;
   EXPECT_FALSE(fs::exists(json)) << "no JSON for a stand the device cannot light";
