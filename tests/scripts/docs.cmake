@@ -99,9 +99,28 @@ add_runs_fixture_test(light_runs check_reports_a_stale_summary 1
     "stale.md: its summary of the light goal's runs differs from runs.csv's.*\n-\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.078 s [^\n]*\n\\+\\| 2026-12-02 08:00 \\| 2 \\| 1 \\| 1.016 s "
     --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/stale.md)
 add_runs_fixture_test(light_runs check_reports_an_unquoted_count 1
-    "unquoted.md: the summary of 19 lines matches runs.csv\n.*unquoted.md: the front goal table's 10⁵ light row does not read \"one of two on the one started 2026-12-02 08:00\\)\", as runs.csv gives it"
+    "unquoted.md: the summary of 19 lines matches runs.csv\n.*unquoted.md: the front goal table's 10⁵ light row does not read \"first 10⁵ solve [^\n]*, one of two on the machine started 2026-12-02 08:00\\)\", as runs.csv gives it"
     --runs ${LIGHT_RUNS_FIXTURE}/runs.csv --check ${LIGHT_RUNS_FIXTURE}/unquoted.md)
 add_runs_bad_row_tests(light_runs
     "bad_balls|bad_balls.csv:3: field 'balls': '10000' is not a size of the light goal"
     "bad_later|bad_later.csv:2: field 'later_s': '0.62,' is not a number of seconds"
     "bad_cache|bad_cache.csv:2: field 'kernel_cache': 'cold' is not one of warm, empty")
+
+# --write on the same fixtures (tests/docs/runs_write.py, each test a CTest of its own): a doc written from the runs
+# before runs.csv's last (before.md, from runs_before.csv) is brought to read as runs.csv gives it, its summary and
+# every quotation, so that --check passes; nothing else changes, a wrapped quotation keeps its line break, lines pushed
+# past 120 characters are wrapped again without parting a number from its unit, and a second --write changes nothing.
+# A quotation read in two places is left and named (exit 1), the earlier runs come from the last commit where --was
+# does not name them, and without earlier runs the summary is written and the quotations named.
+foreach(name IN ITEMS the_hectare_doc_reads_as_the_runs_give_it the_light_doc_reads_as_the_runs_give_it
+                      only_the_quotations_change a_wrapped_quotation_keeps_its_line_break
+                      lines_pushed_past_120_characters_are_wrapped_again
+                      a_number_keeps_its_unit_when_a_line_is_wrapped_again writing_twice_changes_nothing
+                      a_quotation_read_in_two_places_is_left_and_named the_earlier_runs_are_the_last_commits
+                      without_earlier_runs_the_summary_is_written_and_the_quotations_named
+                      an_earlier_runs_file_that_cannot_be_read_writes_nothing was_goes_with_write)
+  add_test(NAME docs.runs_write.${name}
+           COMMAND ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/runs_write.py RunsWrite.test_${name})
+  set_tests_properties(docs.runs_write.${name} PROPERTIES LABELS "docs" TIMEOUT 60
+                       ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
+endforeach()

@@ -5,15 +5,18 @@ over runs, not one run. The runs of a goal are rows of a CSV file, one a run, in
 (hectare_runs.py, light_runs.py) reads them, writes their summary between two marker lines of the doc, and checks that
 the summary there and the goal tables' quotations of it still read as the runs give them. This module is what those
 scripts share: reading the rows (each field checked, errors naming the file, line and field), writing numbers as the
-docs do, and the summary's place in the doc.
+docs do, the summary's place in the doc, and bringing the goal tables' quotations along when runs are added: each
+found as the runs the doc was last written from gave it, and made to read as the runs give it now.
 """
 import argparse
 import csv
 import datetime
 import difflib
+import io
 import math
 import pathlib
 import re
+import subprocess
 import sys
 
 HEADING = re.compile(r"^#{1,6}\s+(.+?)\s*$")
@@ -109,13 +112,14 @@ def field_of(row, name, check):
         raise BadRow(name, str(reason)) from None
 
 
-def read_rows(path, doc, columns, read_run):
+def read_rows(path, doc, columns, read_run, text=None):
     """The runs of a CSV file whose header is `columns`, each row read by read_run(row, section_check), in the order
-    they started (a row without a time keeps its place among its date's)."""
+    they started (a row without a time keeps its place among its date's). `text` is the file's, where it is not read
+    from `path` (a committed version of it): `path` then only names it in errors."""
     headings = [m.group(1) for line in doc.read_text(encoding="utf-8").splitlines() if (m := HEADING.match(line))]
     section = section_in(doc, headings)
     runs, last = [], None
-    with open(path, newline="", encoding="utf-8") as f:
+    with (open(path, newline="", encoding="utf-8") if text is None else io.StringIO(text, newline="")) as f:
         reader = csv.DictReader(f)
         if reader.fieldnames != columns:
             raise BadInput(f"{path}:1: the header must be {','.join(columns)}, not {','.join(reader.fieldnames or [])}")
@@ -166,16 +170,100 @@ def counted(number, noun):
     return f"{in_words(number)} {noun}{'' if number == 1 else 's'}"
 
 
+def as_prose_holds_it(quote):
+    """A pattern for a quotation as the doc's prose holds it: prose is wrapped, so each space of the quotation may be
+    a line break and the next line's indent."""
+    return re.compile(r"(?: |\n *)".join(re.escape(word) for word in quote.split(" ")))
+
+
 def unquoted(quotations, text):
-    """The quotations, (where, what it must read), that the doc's text does not hold. Prose is wrapped, so the text
-    is read with its line breaks as spaces."""
-    flat = " ".join(text.split("\n"))
-    return [(where, quote) for where, quote in quotations if quote not in flat]
+    """The quotations, (where, what it must read), that the doc's text does not hold."""
+    return [(where, quote) for where, quote in quotations if not as_prose_holds_it(quote).search(text)]
+
+
+def with_breaks_of(held, quote):
+    """`quote` with the line breaks that `held` (an old quotation as the doc held it) had: each after the same word,
+    or after the last word but one where the new quotation is shorter."""
+    separators = re.findall(r" |\n *", held)
+    words = quote.split(" ")
+    breaks = {min(i, len(words) - 2): s for i, s in enumerate(separators) if s != " "}
+    return words[0] + "".join(breaks.get(i, " ") + word for i, word in enumerate(words[1:]))
+
+
+LINE_LIMIT = 120  # the docs' prose is wrapped at 120 characters; tables, headings and code are not
+
+
+def unbreakable_at(line, space):
+    """Whether the space at index `space` must not become a line break: between a number and its unit or its next
+    three digits (4 613 MiB, 665.5 s), or where the next line would begin as a list item, heading, table or quote."""
+    left, right = line[:space], line[space + 1:]
+    return bool(re.search(r"\d$", left) and re.match(r"(\d{3}\b|s\b|ms\b|µs\b|[KMG]iB\b|%|×)", right)) or \
+        bool(re.match(r"([-+*] |\d+\. |#|\||>)", right))
+
+
+def prose(lines, i):
+    """Whether line i is a line of a paragraph or list item, the lines the docs wrap: not blank, a table row, a
+    heading, a comment or code (fenced, or indented by four spaces)."""
+    line = lines[i]
+    in_fence = sum(earlier.lstrip().startswith("```") for earlier in lines[:i]) % 2 == 1
+    return bool(line.strip()) and not in_fence and not line.startswith("    ") and \
+        not line.lstrip().startswith(("|", "#", "<!--", "```"))
+
+
+def carried_forward(lines, i):
+    """Lines with line i, where a quotation made it longer than the docs' prose lines, wrapped again: the words past
+    the limit carried to the start of the next line of its paragraph (or a new line at the paragraph's end), and so on
+    down the paragraph until every line fits. The lines before i and after the paragraph stay as they were."""
+    while i < len(lines) and len(lines[i]) > LINE_LIMIT and prose(lines, i):
+        line = lines[i]
+        indent = re.match(r" *(?:[-*] |\d+\. )?", line).group()
+        spaces = [k for k in range(len(indent), min(len(line), LINE_LIMIT + 1))
+                  if line[k] == " " and line[k - 1] != " " and not unbreakable_at(line, k)]
+        if not spaces:
+            return lines  # one word longer than a line: left as it is
+        cut = spaces[-1]
+        kept, carried = line[:cut], line[cut + 1:]
+        lines[i] = kept
+        following = i + 1 < len(lines) and prose(lines, i + 1) and \
+            not re.match(r" *(?:[-*] |\d+\. )", lines[i + 1])
+        if following:
+            lines[i + 1] = re.match(r" *", lines[i + 1]).group() + carried + " " + lines[i + 1].lstrip()
+        else:
+            lines.insert(i + 1, " " * len(indent) + carried)
+        i += 1
+    return lines
+
+
+def requoted(text, earlier, quotations):
+    """The doc's text with each quotation as the earlier runs gave it made to read as the runs give it now, and what
+    was done, one line each: (text, [(where, was, now)], [(where, why it was left)]). A quotation is replaced only
+    where the doc reads it in exactly one place (a count of old words elsewhere, in a dated section, is history); the
+    lines it made too long are wrapped again."""
+    done, left = [], []
+    for (where, was), (_, now) in zip(earlier, quotations):
+        if was == now:
+            continue
+        places = list(as_prose_holds_it(was).finditer(text))
+        if len(places) > 1:
+            left.append((where, f"it reads \"{was}\", as the earlier runs gave it, in {len(places)} places, not one"))
+        if len(places) != 1:
+            continue
+        place = places[0]
+        held = with_breaks_of(place.group(), now)
+        text = text[:place.start()] + held + text[place.end():]
+        lines = text.split("\n")
+        first = text.count("\n", 0, place.start())
+        for i in range(first, first + held.count("\n") + 1):
+            carried_forward(lines, i)
+        text = "\n".join(lines)
+        done.append((where, was, now))
+    return text, done, left
 
 
 class Summary:
     """A summary's place in a doc: the lines between `begin` and `end`, which `--write` replaces and `--check`
-    compares, and the goal tables' quotations of it, which `--write` names and `--check` asks for."""
+    compares, and the goal tables' quotations of it, which `--write` brings along (or names, where it cannot find
+    them) and `--check` asks for."""
 
     def __init__(self, begin, end, what):
         self.begin, self.end, self.what = begin, end, what
@@ -192,8 +280,9 @@ class Summary:
             print(f"{doc}: {where} does not read \"{quote}\", as {runs_name} gives it; write it there",
                   file=sys.stderr)
 
-    def write_or_check(self, args, block, quotations, script):
-        """Print the summary, or write it into args.write, or check args.check against it; the exit status."""
+    def write_or_check(self, args, block, quotations, earlier, script):
+        """Print the summary, or write it into args.write, or check args.check against it; the exit status. `earlier`
+        is the quotations as the runs the doc was last written from gave them (None where there are none to hand)."""
         if not (args.write or args.check):
             print("\n".join(block))
             return 0
@@ -201,32 +290,44 @@ class Summary:
         text = doc.read_text(encoding="utf-8")
         lines, first, end = self.block(text, doc)
         inner = [""] + block + [""]  # a blank line either side, so the tables stand apart from the markers
-        missing = unquoted(quotations, text)
         if args.check:
-            failed = False
-            if lines[first:end] == inner:
-                print(f"{doc}: the summary of {len(block)} lines matches {args.runs.name}")
-            else:
-                failed = True
-                print(f"{doc}: its summary of {self.what} differs from {args.runs.name}'s; run {script} --write {doc}",
-                      file=sys.stderr)
-                sys.stderr.writelines(line + "\n" for line in difflib.unified_diff(
-                    lines[first:end], inner, f"{doc} (lines {first + 1}-{end})", f"{args.runs.name} summarised",
-                    lineterm=""))
-            if missing:
-                failed = True
-                self.report_unquoted(doc, missing, args.runs.name)
-            else:
-                print(f"{doc}: its goal tables quote the summary as {args.runs.name} gives it "
-                      f"({len(quotations)} places)")
-            return 1 if failed else 0
+            return self.check(doc, lines[first:end], inner, unquoted(quotations, text), len(quotations), args.runs.name,
+                              script, first)
         lines[first:end] = inner
+        text, done, left = requoted("\n".join(lines), earlier, quotations) if earlier else ("\n".join(lines), [], [])
         temporary = doc.with_name(doc.name + ".tmp")
-        temporary.write_text("\n".join(lines), encoding="utf-8")
+        temporary.write_text(text, encoding="utf-8")
         temporary.replace(doc)
-        # the summary is written; the goal tables' words are the writer's to change, so they are only named here
+        for where, was, now in done:
+            print(f"{doc}: {where} now reads \"{now}\" (it read \"{was}\")")
+        for where, why in left:
+            print(f"{doc}: {where}: {why}; left as it is", file=sys.stderr)
+        missing = unquoted(quotations, text)
         self.report_unquoted(doc, missing, args.runs.name)
-        return 0
+        if missing:
+            print(f"{doc}: the summary is written; {counted(len(missing), 'quotation')} of it to write by hand",
+                  file=sys.stderr)
+        return 1 if missing else 0
+
+    def check(self, doc, held, inner, missing, places, runs_name, script, first):
+        """Whether the doc's summary lines (`held`) are the runs' (`inner`) and its goal tables quote them: the exit
+        status of --check, the differences printed."""
+        failed = False
+        if held == inner:
+            print(f"{doc}: the summary of {len(inner) - 2} lines matches {runs_name}")
+        else:
+            failed = True
+            print(f"{doc}: its summary of {self.what} differs from {runs_name}'s; run {script} --write {doc}",
+                  file=sys.stderr)
+            sys.stderr.writelines(line + "\n" for line in difflib.unified_diff(
+                held, inner, f"{doc} (lines {first + 1}-{first + len(held)})", f"{runs_name} summarised",
+                lineterm=""))
+        if missing:
+            failed = True
+            self.report_unquoted(doc, missing, runs_name)
+        else:
+            print(f"{doc}: its goal tables quote the summary as {runs_name} gives it ({places} places)")
+        return 1 if failed else 0
 
 
 def exit_status(run, args):
@@ -243,27 +344,67 @@ def exit_status(run, args):
 
 USAGE = """\
     {script}                print the summary
-    {script} --write DOC    put it between DOC's two marker lines (docs/performance.md)
+    {script} --write DOC    put it between DOC's two marker lines (docs/performance.md), and
+    {script_blank}                make each goal table's quotation of it read as the runs now give it
     {script} --check DOC    exit 1 if DOC's lines differ from it, or a quotation of it in
     {script_blank}                the goal tables does (CTest runs this)
+
+--write finds each quotation as the runs the doc was last written from gave it: the runs file as the checkout's last
+commit has it (git show HEAD:FILE), or the file --was names. A quotation it reads in exactly one place is made to read
+as the runs now give it, keeping its line breaks, and the lines it made longer than 120 characters are wrapped again
+into their paragraph; it prints each. A quotation it cannot find so (the words changed by hand, read in two places, no
+earlier runs to hand) is named with the words it should read, and the exit status is 1: the summary is written, and
+those words are the writer's.
 
 A row that cannot be read (a field missing or malformed, a run out of order, a section the doc does not have) is an
 error naming the file, line and field: exit 2, and nothing is written."""
 
 
 def arguments(description, runs, docs, script):
-    """The command line both scripts take: the runs file, the doc whose sections the runs name, and --write DOC or
-    --check DOC; --help shows what each does (USAGE)."""
+    """The command line both scripts take: the runs file, the doc whose sections the runs name, and --write DOC (with
+    --was FILE) or --check DOC; --help shows what each does (USAGE)."""
     usage = USAGE.format(script=script, script_blank=" " * len(script))
     parser = argparse.ArgumentParser(description=description, epilog=usage,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=pathlib.Path, default=runs)
     parser.add_argument("--sections", type=pathlib.Path, default=docs,
                         help="the doc whose sections the runs name (default docs/performance.md)")
+    parser.add_argument("--was", type=pathlib.Path, metavar="FILE",
+                        help="with --write: the runs file the doc's quotations were last written from (default: the "
+                             "runs file as the last commit has it)")
     action = parser.add_mutually_exclusive_group()
     action.add_argument("--write", type=pathlib.Path, metavar="DOC")
     action.add_argument("--check", type=pathlib.Path, metavar="DOC")
-    return parser.parse_args()
+    args = parser.parse_args()
+    if args.was and not args.write:
+        parser.error("--was goes with --write")
+    return args
+
+
+def as_committed(runs):
+    """The runs file's text as the checkout's last commit has it, and a name for it; (None, why) where git cannot
+    show it (no git, not a checkout, the file not committed)."""
+    try:
+        shown = subprocess.run(["git", "-C", str(runs.parent), "show", f"HEAD:./{runs.name}"], capture_output=True,
+                               text=True, encoding="utf-8")
+    except OSError as error:
+        return None, f"git cannot run ({error.strerror})"
+    if shown.returncode != 0:
+        return None, shown.stderr.strip().split("\n")[-1] or f"git show exited with {shown.returncode}"
+    return shown.stdout, f"{runs} as committed (HEAD)"
+
+
+def earlier_quotations(args, read, quotations):
+    """The quotations as the runs the doc was last written from gave them: those of --was FILE, or of the runs file
+    as committed; None, with a line saying why, where there are none."""
+    if args.was:
+        return quotations(read(args.was, None))
+    text, name = as_committed(args.runs)
+    if text is None:
+        print(f"{args.runs}: no earlier runs to find the goal tables' quotations by ({name}); give them with "
+              "--was FILE", file=sys.stderr)
+        return None
+    return quotations(read(name, text))
 
 
 def command(doc, runs_name, columns, read_run, summary, quotations, summary_place):
@@ -273,7 +414,10 @@ def command(doc, runs_name, columns, read_run, summary, quotations, summary_plac
     script = "validation/bench/" + pathlib.Path(runs_name).stem + ".py"
 
     def run(args):
-        runs = read_rows(args.runs, args.sections, columns, read_run)
-        return summary_place.write_or_check(args, summary(runs), quotations(runs), script)
+        def read(path, text):
+            return read_rows(path, args.sections, columns, read_run, text)
+        runs = read(args.runs, None)
+        earlier = earlier_quotations(args, read, quotations) if args.write else None
+        return summary_place.write_or_check(args, summary(runs), quotations(runs), earlier, script)
     docs = here.parent.parent / "docs" / "performance.md"
     return exit_status(run, arguments(doc.split("\n")[0], here / runs_name, docs, script))
