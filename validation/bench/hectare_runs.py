@@ -26,8 +26,9 @@ counts, the ranges); --check also asks that each of those quotations (QUOTATIONS
 that a run added to the file fails until the goal tables say so too. A doc whose goal tables word a figure otherwise
 fails as well: the message gives the sentence to write.
 
-`validation/bench/hectare_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and `--check
-docs/performance.md` checks the doc against it (CTest runs this); `--help` says more (runs_file.USAGE).
+`validation/bench/hectare_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and brings the
+goal tables' quotations of it along, and `--check docs/performance.md` checks the doc against it (CTest runs this);
+`--help` says more (runs_file.USAGE).
 """
 import statistics
 import sys

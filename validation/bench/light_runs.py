@@ -25,8 +25,9 @@ the median, the quickest and slowest), and the commits' own first solves into a 
 machine by machine. The goal tables quote it (QUOTATIONS below), and --check asks that they read as the runs give
 it.
 
-`validation/bench/light_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and `--check
-docs/performance.md` checks the doc against it (CTest runs this); `--help` says more (runs_file.USAGE).
+`validation/bench/light_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and brings the
+goal tables' quotations of it along, and `--check docs/performance.md` checks the doc against it (CTest runs this);
+`--help` says more (runs_file.USAGE).
 """
 import statistics
 import sys
