@@ -63,6 +63,13 @@ class RunsWrite(unittest.TestCase):
         for name in ("GIT_DIR", "GIT_WORK_TREE", "GIT_INDEX_FILE"):
             self.env.pop(name, None)
 
+    def commit(self, repository):
+        """A git repository in `repository` whose one commit holds its runs.csv."""
+        git = ["git", "-C", str(repository), "-c", "user.name=test", "-c", "user.email=test@localhost", "-c",
+               "commit.gpgsign=false"]
+        for step in (["init", "-q"], ["add", "runs.csv"], ["commit", "-q", "-m", "the runs before"]):
+            subprocess.run(git + step, check=True, capture_output=True, env=self.env)
+
     def doc_from(self, runs, fixture="before.md", extra=""):
         doc = self.folder / "doc.md"
         doc.write_text((FIXTURES / runs / fixture).read_text(encoding="utf-8") + extra, encoding="utf-8")
@@ -153,15 +160,27 @@ class RunsWrite(unittest.TestCase):
         repository.mkdir()
         runs = repository / "runs.csv"
         shutil.copy(FIXTURES / "hectare_runs" / "runs_before.csv", runs)
-        git = ["git", "-C", str(repository), "-c", "user.name=test", "-c", "user.email=test@localhost", "-c",
-               "commit.gpgsign=false"]
-        for step in (["init", "-q"], ["add", "runs.csv"], ["commit", "-q", "-m", "the runs before"]):
-            subprocess.run(git + step, check=True, capture_output=True, env=self.env)
+        self.commit(repository)
         shutil.copy(FIXTURES / "hectare_runs" / "runs.csv", runs)
         doc = self.doc_from("hectare_runs")
         written = run_script("hectare_runs", "--runs", runs, "--write", doc, env=self.env)
         self.assertEqual(written.returncode, 0, written.stdout + written.stderr)
         self.assert_checks("hectare_runs", doc)
+
+    def test_a_committed_file_the_doc_cannot_hold_is_no_earlier_runs(self):
+        repository = self.folder / "checkout"
+        repository.mkdir()
+        runs = repository / "runs.csv"
+        before = (FIXTURES / "hectare_runs" / "runs_before.csv").read_text(encoding="utf-8")
+        runs.write_text(before.replace("A quick hour", "An hour the doc no longer has"), encoding="utf-8")
+        self.commit(repository)
+        shutil.copy(FIXTURES / "hectare_runs" / "runs.csv", runs)
+        doc = self.doc_from("hectare_runs")
+        written = run_script("hectare_runs", "--runs", runs, "--write", doc, env=self.env)
+        self.assertEqual(written.returncode, 1, written.stdout + written.stderr)
+        self.assertIn("runs.csv as committed (HEAD):2: field 'section'", written.stderr)
+        self.assertIn("give them with --was FILE", written.stderr)
+        self.assertIn("does not read \"(1 of 3 runs;\"", written.stderr)
 
     def test_without_earlier_runs_the_summary_is_written_and_the_quotations_named(self):
         runs = self.folder / "runs.csv"  # outside any checkout: git cannot show an earlier one

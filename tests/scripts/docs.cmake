@@ -111,16 +111,16 @@ add_runs_bad_row_tests(light_runs
 # every quotation, so that --check passes; nothing else changes, a wrapped quotation keeps its line break, lines pushed
 # past 120 characters are wrapped again without parting a number from its unit, and a second --write changes nothing.
 # A quotation read in two places is left and named (exit 1), the earlier runs come from the last commit where --was
-# does not name them, and without earlier runs the summary is written and the quotations named.
-foreach(name IN ITEMS the_hectare_doc_reads_as_the_runs_give_it the_light_doc_reads_as_the_runs_give_it
-                      only_the_quotations_change a_wrapped_quotation_keeps_its_line_break
-                      lines_pushed_past_120_characters_are_wrapped_again
-                      a_number_keeps_its_unit_when_a_line_is_wrapped_again writing_twice_changes_nothing
-                      a_quotation_read_in_two_places_is_left_and_named the_earlier_runs_are_the_last_commits
-                      without_earlier_runs_the_summary_is_written_and_the_quotations_named
-                      an_earlier_runs_file_that_cannot_be_read_writes_nothing was_goes_with_write)
+# does not name them, and without earlier runs (or with a committed file the doc cannot hold) the summary is written
+# and the quotations named.
+# The tests are the file's own `def test_NAME` methods, read from it, so that none is left out of CTest.
+set(RUNS_WRITE_TEST ${PROJECT_SOURCE_DIR}/tests/docs/runs_write.py)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${RUNS_WRITE_TEST})
+file(STRINGS ${RUNS_WRITE_TEST} RUNS_WRITE_METHODS REGEX "^    def test_[a-z0-9_]+\\(self\\):$")
+foreach(method IN LISTS RUNS_WRITE_METHODS)
+  string(REGEX REPLACE "^    def test_([a-z0-9_]+)\\(self\\):$" "\\1" name "${method}")
   add_test(NAME docs.runs_write.${name}
-           COMMAND ${HELIOSTAND_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/runs_write.py RunsWrite.test_${name})
+           COMMAND ${HELIOSTAND_TEST_PYTHON} ${RUNS_WRITE_TEST} RunsWrite.test_${name})
   set_tests_properties(docs.runs_write.${name} PROPERTIES LABELS "docs" TIMEOUT 60
                        ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1")
 endforeach()
