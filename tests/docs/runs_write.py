@@ -155,29 +155,32 @@ class RunsWrite(unittest.TestCase):
         self.assertIn("does not read \"(1 of 3 runs;\"", written.stderr)
         self.assertTrue(doc.read_text(encoding="utf-8").endswith(history))
 
-    def test_the_earlier_runs_are_the_last_commits(self):
+    def checkout_holding(self, committed):
+        """runs.csv of a scratch checkout whose one commit holds `committed`, the file now the fixture's runs.csv."""
         repository = self.folder / "checkout"
         repository.mkdir()
         runs = repository / "runs.csv"
-        shutil.copy(FIXTURES / "hectare_runs" / "runs_before.csv", runs)
+        runs.write_text(committed, encoding="utf-8")
         self.commit(repository)
         shutil.copy(FIXTURES / "hectare_runs" / "runs.csv", runs)
+        return runs
+
+    def write_without_was(self, runs, status):
+        """before.md written from `runs` with no --was, the exit status asserted; the doc and the script's output."""
         doc = self.doc_from("hectare_runs")
         written = run_script("hectare_runs", "--runs", runs, "--write", doc, env=self.env)
-        self.assertEqual(written.returncode, 0, written.stdout + written.stderr)
+        self.assertEqual(written.returncode, status, written.stdout + written.stderr)
+        return doc, written
+
+    def test_the_earlier_runs_are_the_last_commits(self):
+        before = (FIXTURES / "hectare_runs" / "runs_before.csv").read_text(encoding="utf-8")
+        doc, _ = self.write_without_was(self.checkout_holding(before), 0)
         self.assert_checks("hectare_runs", doc)
 
     def test_a_committed_file_the_doc_cannot_hold_is_no_earlier_runs(self):
-        repository = self.folder / "checkout"
-        repository.mkdir()
-        runs = repository / "runs.csv"
         before = (FIXTURES / "hectare_runs" / "runs_before.csv").read_text(encoding="utf-8")
-        runs.write_text(before.replace("A quick hour", "An hour the doc no longer has"), encoding="utf-8")
-        self.commit(repository)
-        shutil.copy(FIXTURES / "hectare_runs" / "runs.csv", runs)
-        doc = self.doc_from("hectare_runs")
-        written = run_script("hectare_runs", "--runs", runs, "--write", doc, env=self.env)
-        self.assertEqual(written.returncode, 1, written.stdout + written.stderr)
+        runs = self.checkout_holding(before.replace("A quick hour", "An hour the doc no longer has"))
+        _, written = self.write_without_was(runs, 1)
         self.assertIn("runs.csv as committed (HEAD):2: field 'section'", written.stderr)
         self.assertIn("give them with --was FILE", written.stderr)
         self.assertIn("does not read \"(1 of 3 runs;\"", written.stderr)
@@ -185,9 +188,7 @@ class RunsWrite(unittest.TestCase):
     def test_without_earlier_runs_the_summary_is_written_and_the_quotations_named(self):
         runs = self.folder / "runs.csv"  # outside any checkout: git cannot show an earlier one
         shutil.copy(FIXTURES / "hectare_runs" / "runs.csv", runs)
-        doc = self.doc_from("hectare_runs")
-        written = run_script("hectare_runs", "--runs", runs, "--write", doc, env=self.env)
-        self.assertEqual(written.returncode, 1, written.stdout + written.stderr)
+        doc, written = self.write_without_was(runs, 1)
         self.assertIn("no earlier runs to find the goal tables' quotations by", written.stderr)
         self.assertIn("does not read \"(1 of 3 runs;\"", written.stderr)
         check = run_script("hectare_runs", "--runs", runs, "--check", doc, env=self.env)
