@@ -33,7 +33,8 @@ goal tables' quotations of it along, and `--check docs/performance.md` checks th
 import statistics
 import sys
 
-from runs_file import Summary, command, counted, field_of, in_words, one_of, positive, spaced, when_and_what
+from runs_file import (Summary, by_machine, command, counted, field_of, in_words, machine_label, one_of, positive,
+                       spaced, when_and_what)
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
@@ -96,11 +97,8 @@ def summary(runs):
               "| machine started (UTC) | runs | under 10 min | median (of the line) | quickest–slowest "
               "| peak memory |",
               "|---|---:|---:|---:|---:|---:|"]
-    for started in dict.fromkeys(r["machine_started"] for r in latest):
-        machine = [r for r in latest if r["machine_started"] == started]
-        days = sorted({r["date"].strftime("%Y-%m-%d") for r in machine})
-        label = started or "not recorded (runs of " + (days[0] if len(days) == 1 else f"{days[0]} to {days[-1]}") + ")"
-        lines.append(row_of(label, machine))
+    for started, machine in by_machine(latest):
+        lines.append(row_of(machine_label(started, machine), machine))
     left_out = len(runs) - len(kept)
     lines += ["", f"{len(runs)} runs in the file" + (
         f", {left_out} of them left out of these counts: their tables differ." if left_out else ".")]

@@ -33,7 +33,8 @@ import statistics
 import sys
 import textwrap
 
-from runs_file import BadRow, Summary, command, field_of, in_words, one_of, positive, when_and_what
+from runs_file import (BadRow, Summary, by_machine, command, field_of, in_words, machine_label, one_of, positive,
+                       when_and_what)
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
@@ -132,15 +133,12 @@ def summary(runs):
               "| 10⁶: first solves | over 10 s | median | quickest–slowest |",
               "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
-    for started in dict.fromkeys(r["machine_started"] for r in warm):
-        machine = [r for r in warm if r["machine_started"] == started]
-        days = sorted({r["date"].strftime("%Y-%m-%d") for r in machine})
-        label = started or "not recorded (runs of " + (days[0] if len(days) == 1 else f"{days[0]} to {days[-1]}") + ")"
+    for started, machine in by_machine(warm):
         cells = []
         for size in SIZES:
             f = figures_of(firsts([r for r in machine if r["balls"] == size]), size)
             cells += [str(f["solves"]), str(f["over"]), f"{f['median']} s" if f["solves"] else "—", f["range"]]
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+        lines.append(f"| {machine_label(started, machine)} | " + " | ".join(cells) + " |")
     lines += ["", f"{len(runs)} rows in the file, a size of one run of the command each; "
               f"{len(of_code(runs, VARIANTS))} of them a variant's."]
     return lines
@@ -162,10 +160,9 @@ def over_of(figures):
 def machine_by_machine(warm):
     """The first 10⁵ solves over the line machine by machine, in the order the machines first ran them: "five of eight
     on the machine started 2026-12-02 16:05, one of two on machines whose start was not recorded, ..."."""
-    firsts_at_10_5 = [r for r in warm if r["balls"] == 100000]
     parts = []
-    for started in dict.fromkeys(r["machine_started"] for r in firsts_at_10_5):
-        f = figures_of(firsts([r for r in firsts_at_10_5 if r["machine_started"] == started]), 100000)
+    for started, machine in by_machine([r for r in warm if r["balls"] == 100000]):
+        f = figures_of(firsts(machine), 100000)
         where = f"on the machine started {started}" if started else "on machines whose start was not recorded"
         parts.append(f"{over_of(f)} {where}")
     return ", ".join(parts)

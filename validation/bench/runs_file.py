@@ -145,6 +145,18 @@ def read_rows(path, doc, columns, read_run, text=None):
     return runs
 
 
+def by_machine(runs):
+    """The runs, (when the machine was started, its runs), machine by machine in the order the machines first ran."""
+    return [(started, [r for r in runs if r["machine_started"] == started])
+            for started in dict.fromkeys(r["machine_started"] for r in runs)]
+
+
+def machine_label(started, runs):
+    """A machine's row in a summary: when it was started, or the days of its runs where that was not recorded."""
+    days = sorted({r["date"].strftime("%Y-%m-%d") for r in runs})
+    return started or "not recorded (runs of " + (days[0] if len(days) == 1 else f"{days[0]} to {days[-1]}") + ")"
+
+
 def spaced(number):
     """Thousands apart by a space, as the docs write them (4 613 MiB)."""
     whole, point, fraction = str(number).partition(".")
