@@ -155,6 +155,26 @@ class RunsWrite(unittest.TestCase):
         self.assertIn("does not read \"(1 of 3 runs;\"", written.stderr)
         self.assertTrue(doc.read_text(encoding="utf-8").endswith(history))
 
+    def test_a_kinds_cell_is_written_in_both_of_its_places(self):
+        # two_kinds.csv: runs.csv's runs and an Intel Xeon's; the doc as the Xeon's first run alone gave its 10⁶ cell,
+        # which both goal tables read
+        fixture = FIXTURES / "light_runs"
+        rows = (fixture / "two_kinds.csv").read_text(encoding="utf-8").rstrip("\n").split("\n")
+        before = self.folder / "two_kinds_before.csv"
+        before.write_text("\n".join(rows[:-2]) + "\n", encoding="utf-8")  # without the Xeon's second run
+        was, now = "| 5.04–5.18 s (first 5.45 s) |", "| 4.91–5.18 s (first 5.25–5.45 s) |"
+        doc = self.doc_from("light_runs", fixture="two_kinds.md")
+        doc.write_text(doc.read_text(encoding="utf-8").replace(now, was), encoding="utf-8")
+        self.assertEqual(doc.read_text(encoding="utf-8").count(was), 2)
+        written = run_script("light_runs", "--runs", fixture / "two_kinds.csv", "--write", doc, "--was", before,
+                             env=self.env)
+        self.assertEqual(written.returncode, 0, written.stdout + written.stderr)
+        self.assertEqual(written.stdout.count(" now reads "), 2, written.stdout)
+        text = doc.read_text(encoding="utf-8")
+        self.assertEqual((text.count(was), text.count(now)), (0, 2))
+        check = run_script("light_runs", "--runs", fixture / "two_kinds.csv", "--check", doc, env=self.env)
+        self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+
     def checkout_holding(self, committed):
         """runs.csv of a scratch checkout whose one commit holds `committed`, the file now the fixture's runs.csv."""
         repository = self.folder / "checkout"

@@ -85,7 +85,14 @@ add_runs_bad_row_tests(hectare_runs
     "bad_wall|bad_wall.csv:3: field 'wall_s': -580.0 seconds is not a positive, finite amount"
     "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
     "no_section|no_section.csv:3: field 'section': [^\n]*sections.md has no section \"A slow hour\""
-    "short_row|short_row.csv:3: field 'peak_mib': missing")
+    "short_row|short_row.csv:3: field 'peak_mib': missing"
+    "bad_cpu|bad_cpu.csv:3: field 'cpu': 'AMD EPYC' is not a processor written as NAME family N model N")
+# Each kind of processor apart: on two_kinds.csv (runs.csv's runs and two of an Intel Xeon) the family-26 EPYC's
+# summary and quotations read as on runs.csv alone, the Xeon's runs have tables of their own, and its column of the
+# front goal table, one run behind, is named with the words it should read, and nothing else is.
+add_runs_fixture_test(hectare_runs check_holds_each_kind_apart 1
+    "two_kinds.md: the summary of 28 lines matches two_kinds.csv\n[^\n]*two_kinds.md: the front goal table's hectare row, the Intel Xeon of CPU family 6, model 85's column does not read \"\\| \\*\\*560.0–575.0 s\\*\\* in two runs, all under the line \\|\", as two_kinds.csv gives it[^\n]*\n$"
+    --runs ${HECTARE_RUNS_FIXTURE}/two_kinds.csv --check ${HECTARE_RUNS_FIXTURE}/two_kinds.md)
 
 # The same for the light goal's runs ("Every light goal run on two cores"): validation/bench/light_runs.py makes the
 # summary of validation/bench/light_runs.csv, and the goal tables' light rows quote its counts of first solves over
@@ -105,6 +112,12 @@ add_runs_bad_row_tests(light_runs
     "bad_balls|bad_balls.csv:3: field 'balls': '10000' is not a size of the light goal"
     "bad_later|bad_later.csv:2: field 'later_s': '0.62,' is not a number of seconds"
     "bad_cache|bad_cache.csv:2: field 'kernel_cache': 'cold' is not one of warm, empty")
+# Each kind apart, as for the hectare: on two_kinds.csv the Xeon's 10⁶ cell, which both goal tables must read, is
+# read in one of them only, and both places are named with the words they should read (which one is behind, the
+# script cannot tell), and nothing else is.
+add_runs_fixture_test(light_runs check_holds_each_kind_apart 1
+    "two_kinds.md: the summary of 37 lines matches two_kinds.csv\n[^\n]*two_kinds.md: the front goal table's 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column \\(one of two places that must read it[^\n]*\n[^\n]*two_kinds.md: \"The goal table in full\"'s 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column [^\n]* does not read \"\\| 4.91–5.18 s \\(first 5.25–5.45 s\\) \\|\"[^\n]*\n$"
+    --runs ${LIGHT_RUNS_FIXTURE}/two_kinds.csv --check ${LIGHT_RUNS_FIXTURE}/two_kinds.md)
 
 # --write on the same fixtures (tests/docs/runs_write.py, each test a CTest of its own): a doc written from the runs
 # before runs.csv's last (before.md, from runs_before.csv) is brought to read as runs.csv gives it, its summary and

@@ -9,6 +9,7 @@ they ran:
 
     date, time_utc        when the command ran (UTC; time empty where its section did not record it)
     machine_started       when the machine it ran on was started ("YYYY-MM-DD HH:MM" UTC), empty where not recorded
+    cpu                   the kind of processor, as in hectare_runs.csv ("AMD EPYC family 26 model 2")
     code                  the commit the binary was built from
     variant               empty for that commit's own code; otherwise what was changed or set for the run
     kernels               which generation of the light kernels it ran, as in hectare_runs.csv
@@ -19,29 +20,32 @@ they ran:
     section               the section of docs/performance.md that has the run, its command and its context
 
 The variants, measured beside a commit's own code for their time, are counted apart from it: some (malloc's huge pages)
-move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables: the first and
-later solves of each size, kernel generation, own code or variant and kernel cache (how many, how many over the line,
-the median, the quickest and slowest), and the commits' own first solves into a warm cache with the latest kernels
-machine by machine. The goal tables quote it (QUOTATIONS below), and --check asks that they read as the runs give
-it.
+move a first solve's time, and a user runs the commit's own code. The summary is two Markdown tables for each kind of
+processor, summarised apart as in hectare_runs.py: the first and later solves of each size, kernel generation, own
+code or variant and kernel cache (how many, how many over the line, the median, the quickest and slowest), and the
+commits' own first solves into a warm cache with the latest kernels machine by machine. The goal tables quote it: the
+family-26 EPYC's counts in their sentences (QUOTATIONS below), every other kind's ranges in its column of both tables
+(KIND_QUOTATIONS); --check asks that they read as the runs give it.
 
 `validation/bench/light_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and brings the
 goal tables' quotations of it along, and `--check docs/performance.md` checks the doc against it (CTest runs this);
 `--help` says more (runs_file.USAGE).
 """
+import decimal
 import statistics
 import sys
 import textwrap
 
-from runs_file import (BadRow, Summary, by_machine, command, field_of, in_words, machine_label, one_of, positive,
-                       when_and_what)
+from runs_file import (BadRow, Summary, by_kind, by_machine, command, field_of, in_words, kind_label, machine_label,
+                       one_of, positive, when_and_what)
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
 BEGIN = "<!-- validation/bench/light_runs.py writes the lines below from validation/bench/light_runs.csv -->"
 END = "<!-- end of validation/bench/light_runs.py's lines -->"
 SUMMARY = Summary(BEGIN, END, "the light goal's runs")
-COLUMNS = ["date", "time_utc", "machine_started", "code", "variant", "kernels", "kernel_cache", "balls", "first_s",
+FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose counts the goal tables' sentences quote
+COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "kernel_cache", "balls", "first_s",
            "later_s", "section"]
 
 
@@ -111,7 +115,9 @@ def of_code(runs, which):
     return [r for r in runs if bool(r["variant"]) == (which == VARIANTS)]
 
 
-def summary(runs):
+def kind_summary(runs):
+    """One kind of processor's two tables: every solve by size, kernels, code and kernel cache, and its commits' own
+    first solves into a warm cache with its latest kernels machine by machine."""
     generations, latest = generations_of(runs)
     lines = ["| balls | kernels | code | kernel cache | first solves | over the line | median (of the line) "
              "| quickest–slowest | later solves given one by one | over the line | quickest–slowest |",
@@ -139,7 +145,17 @@ def summary(runs):
             f = figures_of(firsts([r for r in machine if r["balls"] == size]), size)
             cells += [str(f["solves"]), str(f["over"]), f"{f['median']} s" if f["solves"] else "—", f["range"]]
         lines.append(f"| {machine_label(started, machine)} | " + " | ".join(cells) + " |")
-    lines += ["", f"{len(runs)} rows in the file, a size of one run of the command each; "
+    return lines
+
+
+def summary(runs):
+    kinds = by_kind(runs)
+    lines = []
+    for cpu, of_kind in kinds:
+        if len(kinds) > 1:
+            lines += [f"On the 2-core {kind_label(cpu)}:", ""]
+        lines += kind_summary(of_kind) + [""]
+    lines += [f"{len(runs)} rows in the file, a size of one run of the command each; "
               f"{len(of_code(runs, VARIANTS))} of them a variant's."]
     return lines
 
@@ -180,12 +196,47 @@ QUOTATIONS = [
 ]
 
 
-def quotations(runs):
-    """Each of QUOTATIONS as (where, what it must read) for these runs."""
+def hundredths(solves):
+    """The quickest and slowest of some solves to two decimals, as the goal tables' columns write them ("0.66–0.72"),
+    rounded half up from the digits measured (4.905 s is 4.91)."""
+    ends = [min(solves, key=lambda s: s[1])[0], max(solves, key=lambda s: s[1])[0]]
+    low, high = (str(decimal.Decimal(e).quantize(decimal.Decimal("0.01"), decimal.ROUND_HALF_UP)) for e in ends)
+    return low if low == high else f"{low}–{high}"
+
+
+def columns_cells(runs):
+    """Another kind's cells in both goal tables: at 10⁶ its later solves (first solves), at 10⁵ the same, its first
+    solves into a warm kernel cache, and those into an empty one named apart; the commits' own code, latest kernels."""
     _, latest = generations_of(runs)
-    warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
-    f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
-    return [(where, quote(f5, f6, machine_by_machine(warm))) for where, quote in QUOTATIONS]
+    own = of_code(latest, OWN)
+    of_size = {size: [r for r in own if r["balls"] == size] for size in SIZES}
+    million, hundred_thousand = of_size[1000000], of_size[100000]
+    cells = {}
+    if million and laters(million):
+        cells[1000000] = f"| {hundredths(laters(million))} s (first {hundredths(firsts(million))} s) |"
+    warm = [r for r in hundred_thousand if r["kernel_cache"] == "warm"]
+    empty = [r for r in hundred_thousand if r["kernel_cache"] == "empty"]
+    if warm and laters(hundred_thousand):
+        cells[100000] = f"| {hundredths(laters(hundred_thousand))} s (first {hundredths(firsts(warm))} s" + (
+            f"; {hundredths(firsts(empty))} s into an empty kernel cache" if empty else "") + ") |"
+    return cells
+
+
+def quotations(runs):
+    """Each of QUOTATIONS, for the family-26 EPYC's runs, and each other kind's cells in its column of both goal
+    tables, as (where, what it must read)."""
+    found = []
+    for cpu, of_kind in by_kind(runs):
+        if cpu == FAMILY_26:
+            _, latest = generations_of(of_kind)
+            warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
+            f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
+            found += [(where, quote(f5, f6, machine_by_machine(warm))) for where, quote in QUOTATIONS]
+            continue
+        for size, cell in columns_cells(of_kind).items():
+            found += [(f"{table}'s {SIZES[size]} light row, the {kind_label(cpu)}'s column", cell)
+                      for table in ("the front goal table", "\"The goal table in full\"")]
+    return found
 
 
 if __name__ == "__main__":

@@ -67,6 +67,18 @@ def machine_start(text):
     return text
 
 
+PROCESSOR = re.compile(r"(\S.*?) family (\d+) model (\d+)")
+
+
+def processor(text):
+    """The kind of processor a run ran on, as its benchmark JSON names it: "AMD EPYC family 26 model 2". The speed of
+    these machines is a matter of their kind (two kinds of 2-core machine took 0.94 and 1.11 of the hectare's line at
+    their medians), so each kind's runs are summarised apart."""
+    if not PROCESSOR.fullmatch(text):
+        raise BadRow(f"'{text}' is not a processor written as NAME family N model N (AMD EPYC family 26 model 2)")
+    return text
+
+
 def one_of(*allowed):
     def check(text):
         if text not in allowed:
@@ -90,12 +102,13 @@ def section_in(doc, headings):
 
 
 def when_and_what(row):
-    """The fields every runs file begins with, read: when the run started, on which machine, the commit, any variant,
-    the kernel generation."""
+    """The fields every runs file begins with, read: when the run started, on which machine and kind of processor, the
+    commit, any variant, the kernel generation."""
     return {
         "date": field_of(row, "date", lambda t: parse_date(t, "%Y-%m-%d")),
         "time": field_of(row, "time_utc", start_time),
         "machine_started": field_of(row, "machine_started", machine_start),
+        "cpu": field_of(row, "cpu", processor),
         "code": field_of(row, "code", commit),
         "variant": field_of(row, "variant", str),
         "kernels": field_of(row, "kernels", not_empty),
@@ -151,6 +164,17 @@ def by_machine(runs):
             for started in dict.fromkeys(r["machine_started"] for r in runs)]
 
 
+def by_kind(runs):
+    """The runs, (kind of processor, its runs), kind by kind in the order the kinds first ran."""
+    return [(cpu, [r for r in runs if r["cpu"] == cpu]) for cpu in dict.fromkeys(r["cpu"] for r in runs)]
+
+
+def kind_label(cpu):
+    """A kind of processor as the docs name it: "AMD EPYC of CPU family 26, model 2"."""
+    name, family, model = PROCESSOR.fullmatch(cpu).groups()
+    return f"{name} of CPU family {family}, model {model}"
+
+
 def machine_label(started, runs):
     """A machine's row in a summary: when it was started, or the days of its runs where that was not recorded."""
     days = sorted({r["date"].strftime("%Y-%m-%d") for r in runs})
@@ -188,9 +212,25 @@ def as_prose_holds_it(quote):
     return re.compile(r"(?: |\n *)".join(re.escape(word) for word in quote.split(" ")))
 
 
+def places_of(quotations):
+    """The quotations' words, each with the places that must read them, in the order first listed: a figure the goal
+    tables write in two places (one kind of machine's column in both) is listed once for each."""
+    places = {}
+    for where, quote in quotations:
+        places.setdefault(quote, []).append(where)
+    return places
+
+
 def unquoted(quotations, text):
-    """The quotations, (where, what it must read), that the doc's text does not hold."""
-    return [(where, quote) for where, quote in quotations if not as_prose_holds_it(quote).search(text)]
+    """The quotations, (where, what it must read), that the doc's text does not hold: words listed for n places that
+    the text reads in fewer are named at each of their places."""
+    missing = []
+    for quote, wheres in places_of(quotations).items():
+        found = len(as_prose_holds_it(quote).findall(text))
+        if found < len(wheres):
+            missing += [(where if len(wheres) == 1 else f"{where} (one of {in_words(len(wheres))} places that must read "
+                         f"it; the doc reads it in {in_words(found)})", quote) for where in wheres]
+    return missing
 
 
 def with_breaks_of(held, quote):
@@ -248,28 +288,50 @@ def carried_forward(lines, i):
 
 def requoted(text, earlier, quotations):
     """The doc's text with each quotation as the earlier runs gave it made to read as the runs give it now, and what
-    was done, one line each: (text, [(where, was, now)], [(where, why it was left)]). A quotation is replaced only
-    where the doc reads it in exactly one place (a count of old words elsewhere, in a dated section, is history); the
-    lines it made too long are wrapped again."""
+    was done, one line each: (text, [(where, was, now)], [(where, why it was left)]). Words are replaced only where the
+    doc reads them in as many places as are listed for them (a count of old words elsewhere, in a dated section, is
+    history); the lines they made too long are wrapped again."""
     done, left = [], []
-    for (where, was), (_, now) in zip(earlier, quotations):
-        if was == now:
-            continue
+    was_at = dict(zip(numbered(earlier), (was for _, was in earlier)))
+    changes = {}
+    for place, (where, now) in zip(numbered(quotations), quotations):
+        was = was_at.get(place, now)  # a place new with these runs (a kind's first runs) had no earlier words
+        if was != now:
+            changes.setdefault((was, now), []).append(where)
+    for (was, now), wheres in changes.items():
         places = list(as_prose_holds_it(was).finditer(text))
-        if len(places) > 1:
-            left.append((where, f"it reads \"{was}\", as the earlier runs gave it, in {len(places)} places, not one"))
-        if len(places) != 1:
+        if len(places) > len(wheres):
+            left.append((" and ".join(wheres), f"it reads \"{was}\", as the earlier runs gave it, in {len(places)} "
+                         f"places, not {in_words(len(wheres))}"))
+        if len(places) != len(wheres):
             continue
-        place = places[0]
-        held = with_breaks_of(place.group(), now)
-        text = text[:place.start()] + held + text[place.end():]
-        lines = text.split("\n")
-        first = text.count("\n", 0, place.start())
-        for i in range(first, first + held.count("\n") + 1):
-            carried_forward(lines, i)
-        text = "\n".join(lines)
-        done.append((where, was, now))
+        for place in reversed(places):  # the last first, so that the earlier places' offsets still hold
+            text = quoted_at(text, place, now)
+        done += [(where, was, now) for where in wheres]
     return text, done, left
+
+
+def numbered(quotations):
+    """Each quotation's place as (where, how many before it had the same where): the key that pairs a quotation as the
+    earlier runs gave it with the same one now, where the runs of a new kind have added places between them."""
+    seen = {}
+    keys = []
+    for where, _ in quotations:
+        keys.append((where, seen.get(where, 0)))
+        seen[where] = seen.get(where, 0) + 1
+    return keys
+
+
+def quoted_at(text, place, now):
+    """The text with the words at `place` (a match of an old quotation) made to read `now`, keeping their line breaks,
+    and the lines that made too long wrapped again."""
+    held = with_breaks_of(place.group(), now)
+    text = text[:place.start()] + held + text[place.end():]
+    lines = text.split("\n")
+    first = text.count("\n", 0, place.start())
+    for i in range(first, first + held.count("\n") + 1):
+        carried_forward(lines, i)
+    return "\n".join(lines)
 
 
 class Summary:
