@@ -37,8 +37,8 @@ goal tables' quotations of it along, and `--check docs/performance.md` checks th
 import statistics
 import sys
 
-from runs_file import (Summary, by_kind, by_machine, command, counted, field_of, in_words, kind_label, machine_label,
-                       one_of, positive, spaced, when_and_what)
+from runs_file import (Summary, by_kind, by_machine, command, counted, field_of, in_words, kind_by_kind, kind_label,
+                       machine_label, one_of, positive, spaced, when_and_what)
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
@@ -112,12 +112,7 @@ def kind_summary(runs):
 
 
 def summary(runs):
-    kinds = by_kind(runs)
-    lines = []
-    for cpu, of_kind in kinds:
-        if len(kinds) > 1:
-            lines += [f"On the 2-core {kind_label(cpu)}:", ""]
-        lines += kind_summary(of_kind) + [""]
+    lines = kind_by_kind(runs, kind_summary)
     left_out = sum(not r["same_tables"] for r in runs)
     lines += [f"{len(runs)} runs in the file" + (
         f", {left_out} of them left out of these counts: their tables differ." if left_out else ".")]

@@ -36,8 +36,8 @@ import statistics
 import sys
 import textwrap
 
-from runs_file import (BadRow, Summary, by_kind, by_machine, command, field_of, in_words, kind_label, machine_label,
-                       one_of, positive, when_and_what)
+from runs_file import (BadRow, Summary, by_kind, by_machine, command, field_of, in_words, kind_by_kind, kind_label,
+                       machine_label, one_of, positive, when_and_what)
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
@@ -149,12 +149,7 @@ def kind_summary(runs):
 
 
 def summary(runs):
-    kinds = by_kind(runs)
-    lines = []
-    for cpu, of_kind in kinds:
-        if len(kinds) > 1:
-            lines += [f"On the 2-core {kind_label(cpu)}:", ""]
-        lines += kind_summary(of_kind) + [""]
+    lines = kind_by_kind(runs, kind_summary)
     lines += [f"{len(runs)} rows in the file, a size of one run of the command each; "
               f"{len(of_code(runs, VARIANTS))} of them a variant's."]
     return lines

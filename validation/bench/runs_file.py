@@ -169,6 +169,18 @@ def by_kind(runs):
     return [(cpu, [r for r in runs if r["cpu"] == cpu]) for cpu in dict.fromkeys(r["cpu"] for r in runs)]
 
 
+def kind_by_kind(runs, kind_summary):
+    """A summary's lines for runs of one or more kinds of processor: kind_summary(its runs) for each kind, under the
+    kind's name where there are several, a blank line after each."""
+    kinds = by_kind(runs)
+    lines = []
+    for cpu, of_kind in kinds:
+        if len(kinds) > 1:
+            lines += [f"On the 2-core {kind_label(cpu)}:", ""]
+        lines += kind_summary(of_kind) + [""]
+    return lines
+
+
 def kind_label(cpu):
     """A kind of processor as the docs name it: "AMD EPYC of CPU family 26, model 2"."""
     name, family, model = PROCESSOR.fullmatch(cpu).groups()
