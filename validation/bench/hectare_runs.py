@@ -26,9 +26,9 @@ is 1.11 of the line, another's 0.94.
 
 The goal tables at the front of docs/performance.md quote the summary's figures in their own words (the median, the
 counts, the ranges): the family-26 EPYC's, the kind measured most, in its sentences (QUOTATIONS), and every other
-kind's in its column of both goal tables (KIND_QUOTATIONS); --check also asks that each of those quotations (QUOTATIONS below) read as the runs give it, so
-that a run added to the file fails until the goal tables say so too. A doc whose goal tables word a figure otherwise
-fails as well: the message gives the sentence to write.
+kind's in its column of both goal tables (KIND_QUOTATIONS); --check also asks that each of those quotations read as
+the runs give it, so that a run added to the file fails until the goal tables say so too. A doc whose goal tables
+word a figure otherwise fails as well: the message gives the sentence to write.
 
 `validation/bench/hectare_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and brings the
 goal tables' quotations of it along, and `--check docs/performance.md` checks the doc against it (CTest runs this);
@@ -45,8 +45,8 @@ BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from valid
 END = "<!-- end of validation/bench/hectare_runs.py's lines -->"
 SUMMARY = Summary(BEGIN, END, "the hectare's runs")
 FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose figures the goal tables' sentences quote
-COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "same_tables", "wall_s", "peak_mib",
-           "section"]
+COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "same_tables", "wall_s",
+           "peak_mib", "section"]
 
 
 def read_run(row, section):
@@ -161,8 +161,8 @@ def under_the_line(figures):
 KIND_QUOTATIONS = [
     ("the front goal table's hectare row", lambda t: f"| **{t['walls']}** in {counted(t['runs'], 'run')}, "
                                                      f"{under_the_line(t)} |"),
-    ("\"The goal table in full\"'s hectare row", lambda t: f"| **{t['walls']}** in {t['runs']} "
-                                                           f"run{'' if t['runs'] == 1 else 's'}, {under_the_line(t)} |"),
+    ("\"The goal table in full\"'s hectare row", lambda t: f"| **{t['walls']}** in {t['runs']} run"
+                                                           f"{'' if t['runs'] == 1 else 's'}, {under_the_line(t)} |"),
     ("the front goal table's memory row", lambda t: f"| {t['peaks']} |"),
     ("\"The goal table in full\"'s memory row", lambda t: f"| {t['peaks']} |"),
 ]

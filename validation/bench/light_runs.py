@@ -25,7 +25,7 @@ processor, summarised apart as in hectare_runs.py: the first and later solves of
 code or variant and kernel cache (how many, how many over the line, the median, the quickest and slowest), and the
 commits' own first solves into a warm cache with the latest kernels machine by machine. The goal tables quote it: the
 family-26 EPYC's counts in their sentences (QUOTATIONS below), every other kind's ranges in its column of both tables
-(KIND_QUOTATIONS); --check asks that they read as the runs give it.
+(columns_cells); --check asks that they read as the runs give it.
 
 `validation/bench/light_runs.py` prints the summary, `--write docs/performance.md` puts it into the doc and brings the
 goal tables' quotations of it along, and `--check docs/performance.md` checks the doc against it (CTest runs this);
@@ -45,8 +45,8 @@ BEGIN = "<!-- validation/bench/light_runs.py writes the lines below from validat
 END = "<!-- end of validation/bench/light_runs.py's lines -->"
 SUMMARY = Summary(BEGIN, END, "the light goal's runs")
 FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose counts the goal tables' sentences quote
-COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "kernel_cache", "balls", "first_s",
-           "later_s", "section"]
+COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "kernel_cache", "balls",
+           "first_s", "later_s", "section"]
 
 
 def balls(text):

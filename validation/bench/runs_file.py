@@ -240,8 +240,10 @@ def unquoted(quotations, text):
     for quote, wheres in places_of(quotations).items():
         found = len(as_prose_holds_it(quote).findall(text))
         if found < len(wheres):
-            missing += [(where if len(wheres) == 1 else f"{where} (one of {in_words(len(wheres))} places that must read "
-                         f"it; the doc reads it in {in_words(found)})", quote) for where in wheres]
+            places = in_words(len(wheres))
+            named = [where if len(wheres) == 1 else f"{where} (one of {places} places that must read it; the doc "
+                     f"reads it in {in_words(found)})" for where in wheres]
+            missing += [(where, quote) for where in named]
     return missing
 
 
