@@ -37,14 +37,13 @@ goal tables' quotations of it along, and `--check docs/performance.md` checks th
 import statistics
 import sys
 
-from runs_file import (Summary, by_kind, by_machine, command, counted, field_of, in_words, kind_by_kind, kind_label,
-                       machine_label, one_of, positive, spaced, when_and_what)
+from runs_file import (Summary, by_machine, command, counted, field_of, in_words, kind_by_kind, machine_label, one_of,
+                       positive, quoted_kind_by_kind, spaced, when_and_what)
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
 END = "<!-- end of validation/bench/hectare_runs.py's lines -->"
 SUMMARY = Summary(BEGIN, END, "the hectare's runs")
-FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose figures the goal tables' sentences quote
 COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "same_tables", "wall_s",
            "peak_mib", "section"]
 
@@ -168,21 +167,28 @@ KIND_QUOTATIONS = [
 ]
 
 
+def in_sentences(runs):
+    """Each of QUOTATIONS for the family-26 EPYC's runs (none where no run grew the same tables)."""
+    kept, _, latest = kept_runs(runs)
+    if not kept:
+        return []
+    every, today = figures_of(kept), figures_of(latest)
+    return [(where, quote(every, today)) for where, quote in QUOTATIONS]
+
+
+def in_its_column(runs):
+    """Each of KIND_QUOTATIONS for another kind's runs (none where no run grew the same tables)."""
+    kept, _, latest = kept_runs(runs)
+    if not kept:
+        return []
+    today = figures_of(latest)
+    return [(where, quote(today)) for where, quote in KIND_QUOTATIONS]
+
+
 def quotations(runs):
     """Each of QUOTATIONS, for the family-26 EPYC's runs, and of KIND_QUOTATIONS, for each other kind's, as (where,
     what it must read)."""
-    found = []
-    for cpu, of_kind in by_kind(runs):
-        kept, _, latest = kept_runs(of_kind)
-        if not kept:
-            continue
-        if cpu == FAMILY_26:
-            every, today = figures_of(kept), figures_of(latest)
-            found += [(where, quote(every, today)) for where, quote in QUOTATIONS]
-        else:
-            found += [(f"{where}, the {kind_label(cpu)}'s column", quote(figures_of(latest)))
-                      for where, quote in KIND_QUOTATIONS]
-    return found
+    return quoted_kind_by_kind(runs, in_sentences, in_its_column)
 
 
 if __name__ == "__main__":

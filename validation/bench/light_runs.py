@@ -36,15 +36,14 @@ import statistics
 import sys
 import textwrap
 
-from runs_file import (BadRow, Summary, by_kind, by_machine, command, field_of, in_words, kind_by_kind, kind_label,
-                       machine_label, one_of, positive, when_and_what)
+from runs_file import (BadRow, Summary, by_machine, command, field_of, in_words, kind_by_kind, machine_label, one_of,
+                       positive, quoted_kind_by_kind, when_and_what)
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
 BEGIN = "<!-- validation/bench/light_runs.py writes the lines below from validation/bench/light_runs.csv -->"
 END = "<!-- end of validation/bench/light_runs.py's lines -->"
 SUMMARY = Summary(BEGIN, END, "the light goal's runs")
-FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose counts the goal tables' sentences quote
 COLUMNS = ["date", "time_utc", "machine_started", "cpu", "code", "variant", "kernels", "kernel_cache", "balls",
            "first_s", "later_s", "section"]
 
@@ -217,21 +216,25 @@ def columns_cells(runs):
     return cells
 
 
+def in_sentences(runs):
+    """Each of QUOTATIONS for the family-26 EPYC's runs: its commits' own first solves into a warm cache with its
+    latest kernels."""
+    _, latest = generations_of(runs)
+    warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
+    f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
+    return [(where, quote(f5, f6, machine_by_machine(warm))) for where, quote in QUOTATIONS]
+
+
+def in_its_column(runs):
+    """Another kind's cells, each in both goal tables."""
+    return [(f"{table}'s {SIZES[size]} light row", cell) for size, cell in columns_cells(runs).items()
+            for table in ("the front goal table", "\"The goal table in full\"")]
+
+
 def quotations(runs):
     """Each of QUOTATIONS, for the family-26 EPYC's runs, and each other kind's cells in its column of both goal
     tables, as (where, what it must read)."""
-    found = []
-    for cpu, of_kind in by_kind(runs):
-        if cpu == FAMILY_26:
-            _, latest = generations_of(of_kind)
-            warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
-            f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
-            found += [(where, quote(f5, f6, machine_by_machine(warm))) for where, quote in QUOTATIONS]
-            continue
-        for size, cell in columns_cells(of_kind).items():
-            found += [(f"{table}'s {SIZES[size]} light row, the {kind_label(cpu)}'s column", cell)
-                      for table in ("the front goal table", "\"The goal table in full\"")]
-    return found
+    return quoted_kind_by_kind(runs, in_sentences, in_its_column)
 
 
 if __name__ == "__main__":

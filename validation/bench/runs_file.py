@@ -187,6 +187,22 @@ def kind_label(cpu):
     return f"{name} of CPU family {family}, model {model}"
 
 
+FAMILY_26 = "AMD EPYC family 26 model 2"  # the kind measured most, whose figures the goal tables' sentences quote
+
+
+def quoted_kind_by_kind(runs, in_sentences, in_its_column):
+    """The goal tables' quotations, (where, what it must read), of runs of one or more kinds of processor:
+    in_sentences(its runs) for the family-26 EPYC, whose figures the tables' sentences quote, and in_its_column(its
+    runs) for each other kind, each place named as that kind's column."""
+    found = []
+    for cpu, of_kind in by_kind(runs):
+        if cpu == FAMILY_26:
+            found += in_sentences(of_kind)
+        else:
+            found += [(f"{where}, the {kind_label(cpu)}'s column", quote) for where, quote in in_its_column(of_kind)]
+    return found
+
+
 def machine_label(started, runs):
     """A machine's row in a summary: when it was started, or the days of its runs where that was not recorded."""
     days = sorted({r["date"].strftime("%Y-%m-%d") for r in runs})
