@@ -273,6 +273,7 @@ def with_breaks_of(held, quote):
 
 
 LINE_LIMIT = 120  # the docs' prose is wrapped at 120 characters; tables, headings and code are not
+LIST_ITEM = r"(?:[-+*] |\d+\. )"  # a Markdown list item's marker, as a line begins after its indent
 
 
 def unbreakable_at(line, space):
@@ -280,7 +281,7 @@ def unbreakable_at(line, space):
     three digits (4 613 MiB, 665.5 s), or where the next line would begin as a list item, heading, table or quote."""
     left, right = line[:space], line[space + 1:]
     return bool(re.search(r"\d$", left) and re.match(r"(\d{3}\b|s\b|ms\b|µs\b|[KMG]iB\b|%|×)", right)) or \
-        bool(re.match(r"([-+*] |\d+\. |#|\||>)", right))
+        bool(re.match(LIST_ITEM + r"|#|\||>", right))
 
 
 def prose(lines, i):
@@ -298,7 +299,7 @@ def carried_forward(lines, i):
     down the paragraph until every line fits. The lines before i and after the paragraph stay as they were."""
     while i < len(lines) and len(lines[i]) > LINE_LIMIT and prose(lines, i):
         line = lines[i]
-        indent = re.match(r" *(?:[-*] |\d+\. )?", line).group()
+        indent = re.match(r" *" + LIST_ITEM + "?", line).group()
         spaces = [k for k in range(len(indent), min(len(line), LINE_LIMIT + 1))
                   if line[k] == " " and line[k - 1] != " " and not unbreakable_at(line, k)]
         if not spaces:
@@ -307,7 +308,7 @@ def carried_forward(lines, i):
         kept, carried = line[:cut], line[cut + 1:]
         lines[i] = kept
         following = i + 1 < len(lines) and prose(lines, i + 1) and \
-            not re.match(r" *(?:[-*] |\d+\. )", lines[i + 1])
+            not re.match(r" *" + LIST_ITEM, lines[i + 1])
         if following:
             lines[i + 1] = re.match(r" *", lines[i + 1]).group() + carried + " " + lines[i + 1].lstrip()
         else:
