@@ -43,7 +43,8 @@ set_tests_properties(docs.section_references_check_reports_the_same_outside_git 
 # or counts otherwise than the runs give them. The other checks run the script on the fixture in
 # tests/docs/hectare_runs: a summary one median out of date is reported with the line that differs, a goal table's
 # count one run behind with the words it should read, and rows that cannot be runs (a negative wall time, a run out
-# of order, a section the doc lacks, a field missing) are errors naming the file, line and field.
+# of order, a section the doc lacks, a field missing, a processor or kernel generation not written as one) are errors
+# naming the file, line and field.
 set(HECTARE_RUNS_FIXTURE ${PROJECT_SOURCE_DIR}/tests/docs/hectare_runs)
 # docs.RUNS_summary_matches_the_runs: validation/bench/RUNS.py --check on docs/performance.md itself.
 function(add_runs_summary_test runs)
@@ -86,13 +87,21 @@ add_runs_bad_row_tests(hectare_runs
     "out_of_order|out_of_order.csv:4: field 'time_utc': the run is earlier than the row before it"
     "no_section|no_section.csv:3: field 'section': [^\n]*sections.md has no section \"A slow hour\""
     "short_row|short_row.csv:3: field 'peak_mib': missing"
-    "bad_cpu|bad_cpu.csv:3: field 'cpu': 'AMD EPYC' is not a processor written as NAME family N model N")
+    "bad_cpu|bad_cpu.csv:3: field 'cpu': 'AMD EPYC' is not a processor written as NAME family N model N"
+    "bad_kernels|bad_kernels.csv:3: field 'kernels': 'floor and ceil as instruction' is not a generation of the light kernels named in runs_file.py's KERNEL_GENERATIONS")
 # Each kind of processor apart: on two_kinds.csv (runs.csv's runs and two of an Intel Xeon) the family-26 EPYC's
 # summary and quotations read as on runs.csv alone, the Xeon's runs have tables of their own, and its column of the
 # front goal table, one run behind, is named with the words it should read, and nothing else is.
 add_runs_fixture_test(hectare_runs check_holds_each_kind_apart 1
     "two_kinds.md: the summary of 28 lines matches two_kinds.csv\n[^\n]*two_kinds.md: the front goal table's hectare row, the Intel Xeon of CPU family 6, model 85's column does not read \"\\| \\*\\*560.0–575.0 s\\*\\* in two runs, all under the line \\|\", as two_kinds.csv gives it[^\n]*\n$"
     --runs ${HECTARE_RUNS_FIXTURE}/two_kinds.csv --check ${HECTARE_RUNS_FIXTURE}/two_kinds.md)
+# A kind's latest kernels are the latest it has run in runs_file.KERNEL_GENERATIONS's order, not in its rows': on
+# older_kernels_last.csv (two_kinds.csv and a run of the Xeon's with the older kernels after its others, as a side by
+# side with an older commit writes it) the Xeon's summary gains that run, but its column of the goal tables is still
+# made from its runs of the latest kernels, so two_kinds.md is named for the same words as on two_kinds.csv.
+add_runs_fixture_test(hectare_runs check_takes_the_latest_kernels_by_name 1
+    "two_kinds.md: its summary of the hectare's runs differs from older_kernels_last.csv's.*\n\\+\\| library floor and ceil \\| 1 \\| 0 \\| 612.0 s [^\n]*\n.*\n With the latest kernels \\(floor and ceil as instructions\\), machine by machine:\n.*\n[^\n]*two_kinds.md: the front goal table's hectare row, the Intel Xeon of CPU family 6, model 85's column does not read \"\\| \\*\\*560.0–575.0 s\\*\\* in two runs, all under the line \\|\", as older_kernels_last.csv gives it[^\n]*\n$"
+    --runs ${HECTARE_RUNS_FIXTURE}/older_kernels_last.csv --check ${HECTARE_RUNS_FIXTURE}/two_kinds.md)
 
 # The same for the light goal's runs ("Every light goal run on two cores"): validation/bench/light_runs.py makes the
 # summary of validation/bench/light_runs.csv, and the goal tables' light rows quote its counts of first solves over
@@ -118,6 +127,11 @@ add_runs_bad_row_tests(light_runs
 add_runs_fixture_test(light_runs check_holds_each_kind_apart 1
     "two_kinds.md: the summary of 37 lines matches two_kinds.csv\n[^\n]*two_kinds.md: the front goal table's 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column \\(one of two places that must read it[^\n]*\n[^\n]*two_kinds.md: \"The goal table in full\"'s 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column [^\n]* does not read \"\\| 4.91–5.18 s \\(first 5.25–5.45 s\\) \\|\"[^\n]*\n$"
     --runs ${LIGHT_RUNS_FIXTURE}/two_kinds.csv --check ${LIGHT_RUNS_FIXTURE}/two_kinds.md)
+# The latest kernels by name, as for the hectare: older_kernels_last.csv adds a run of the Xeon's with the older kernels
+# after its others; its summary gains that run's two rows, and its 10⁶ cell is still the one two_kinds.csv gives.
+add_runs_fixture_test(light_runs check_takes_the_latest_kernels_by_name 1
+    "two_kinds.md: its summary of the light goal's runs differs from older_kernels_last.csv's.*\n\\+\\| 10⁵ \\| library floor and ceil \\| the commit's own code \\| warm \\| 1 \\| 0 \\| 0.801 s [^\n]*\n.*\n[^\n]*two_kinds.md: the front goal table's 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column [^\n]* does not read \"\\| 4.91–5.18 s \\(first 5.25–5.45 s\\) \\|\"[^\n]*\n[^\n]*two_kinds.md: \"The goal table in full\"'s 10⁶ light row, the Intel Xeon of CPU family 6, model 85's column [^\n]* does not read \"\\| 4.91–5.18 s \\(first 5.25–5.45 s\\) \\|\"[^\n]*\n$"
+    --runs ${LIGHT_RUNS_FIXTURE}/older_kernels_last.csv --check ${LIGHT_RUNS_FIXTURE}/two_kinds.md)
 
 # --write on the same fixtures (tests/docs/runs_write.py, each test a CTest of its own): a doc written from the runs
 # before runs.csv's last (before.md, from runs_before.csv) is brought to read as runs.csv gives it, its summary and

@@ -12,8 +12,9 @@ order they ran:
     cpu                   the kind of processor, as the benchmark's JSON names it ("AMD EPYC family 26 model 2")
     code                  the commit the binary was built from
     variant               empty for that commit's own code; otherwise what was changed or set for the run
-    kernels               which generation of the light kernels it ran (the floor and ceil of 2026-12-02 changed
-                          every later run's time by 0.89-0.94, so the verdict counts runs of one generation)
+    kernels               which generation of the light kernels it ran, one of runs_file.KERNEL_GENERATIONS (the
+                          floor and ceil of 2026-12-02 changed every later run's time by 0.89-0.94, so the verdict
+                          counts the runs of a kind's latest generation, whatever the order of its rows)
     same_tables           "yes" if it grew the stand, tree and event tables of every hectare since 2026-11-28
                           byte for byte; "no" for a variant whose answer differs (left out of the summary)
     wall_s, peak_mib      GNU time's wall seconds and maximum resident set (MiB)
@@ -37,8 +38,8 @@ goal tables' quotations of it along, and `--check docs/performance.md` checks th
 import statistics
 import sys
 
-from runs_file import (Summary, by_machine, command, counted, field_of, in_words, kind_by_kind, machine_label, one_of,
-                       positive, quoted_kind_by_kind, spaced, when_and_what)
+from runs_file import (Summary, by_machine, command, counted, field_of, generations_in, in_words, kind_by_kind,
+                       machine_label, one_of, positive, quoted_kind_by_kind, spaced, when_and_what)
 
 GOAL_SECONDS = 600.0  # issue 16: the hectare's 60 years in under 10 minutes
 BEGIN = "<!-- validation/bench/hectare_runs.py writes the lines below from validation/bench/hectare_runs.csv -->"
@@ -82,11 +83,10 @@ def row_of(label, runs):
 
 
 def kept_runs(runs):
-    """The runs that grew the same tables, their kernel generations in the order they first ran, and the runs of the
-    latest generation ("today's kernels")."""
+    """The runs that grew the same tables, their kernel generations oldest first, and the runs of the latest
+    generation ("today's kernels")."""
     kept = [r for r in runs if r["same_tables"]]
-    generations = list(dict.fromkeys(r["kernels"] for r in kept))
-    return kept, generations, [r for r in kept if r["kernels"] == generations[-1]]
+    return (kept, *generations_in(kept))
 
 
 def kind_summary(runs):

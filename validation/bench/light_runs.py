@@ -36,8 +36,8 @@ import statistics
 import sys
 import textwrap
 
-from runs_file import (BadRow, Summary, by_machine, command, field_of, in_words, kind_by_kind, machine_label, one_of,
-                       positive, quoted_kind_by_kind, when_and_what)
+from runs_file import (BadRow, Summary, by_machine, command, field_of, generations_in, in_words, kind_by_kind,
+                       machine_label, one_of, positive, quoted_kind_by_kind, when_and_what)
 
 GOAL_SECONDS = {100000: 1.0, 1000000: 10.0}  # issue 16: 10⁵ leaf balls in ≤ 1 s, 10⁶ in ≤ 10 s
 SIZES = {100000: "10⁵", 1000000: "10⁶"}
@@ -100,12 +100,6 @@ def laters(runs):
     return [s for r in runs for s in r["later"]]
 
 
-def generations_of(runs):
-    """The kernel generations in the order they first ran, and the runs of the latest ("today's kernels")."""
-    generations = list(dict.fromkeys(r["kernels"] for r in runs))
-    return generations, [r for r in runs if r["kernels"] == generations[-1]]
-
-
 OWN, VARIANTS = "the commit's own code", "variants beside it"
 
 
@@ -117,7 +111,7 @@ def of_code(runs, which):
 def kind_summary(runs):
     """One kind of processor's two tables: every solve by size, kernels, code and kernel cache, and its commits' own
     first solves into a warm cache with its latest kernels machine by machine."""
-    generations, latest = generations_of(runs)
+    generations, latest = generations_in(runs)
     lines = ["| balls | kernels | code | kernel cache | first solves | over the line | median (of the line) "
              "| quickest–slowest | later solves given one by one | over the line | quickest–slowest |",
              "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
@@ -201,7 +195,7 @@ def hundredths(solves):
 def columns_cells(runs):
     """Another kind's cells in both goal tables: at 10⁶ its later solves (first solves), at 10⁵ the same, its first
     solves into a warm kernel cache, and those into an empty one named apart; the commits' own code, latest kernels."""
-    _, latest = generations_of(runs)
+    _, latest = generations_in(runs)
     own = of_code(latest, OWN)
     of_size = {size: [r for r in own if r["balls"] == size] for size in SIZES}
     million, hundred_thousand = of_size[1000000], of_size[100000]
@@ -219,7 +213,7 @@ def columns_cells(runs):
 def in_sentences(runs):
     """Each of QUOTATIONS for the family-26 EPYC's runs: its commits' own first solves into a warm cache with its
     latest kernels."""
-    _, latest = generations_of(runs)
+    _, latest = generations_in(runs)
     warm = [r for r in of_code(latest, OWN) if r["kernel_cache"] == "warm"]
     f5, f6 = (figures_of(firsts([r for r in warm if r["balls"] == size]), size) for size in SIZES)
     return [(where, quote(f5, f6, machine_by_machine(warm))) for where, quote in QUOTATIONS]

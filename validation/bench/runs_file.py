@@ -55,12 +55,6 @@ def commit(text):
     return text
 
 
-def not_empty(text):
-    if not text.strip():
-        raise BadRow("empty")
-    return text
-
-
 def machine_start(text):
     if text:
         parse_date(text, "%Y-%m-%d %H:%M")
@@ -101,6 +95,30 @@ def section_in(doc, headings):
     return check
 
 
+# The generations of the light kernels that runs ran, oldest first. A kind's verdicts count the runs of the latest
+# generation it has run ("today's kernels") whatever the order of its rows: an older commit measured beside today's, as
+# a side by side does, is a row after today's. A run of kernels not named here is an error, so that a misspelt
+# generation cannot pass for a new one; a new generation is added at the end.
+KERNEL_GENERATIONS = (
+    "library floor and ceil",          # until 2026-12-02: PoCL's floor and ceil, a dozen vector instructions each
+    "floor and ceil as instructions",  # from 2026-12-02 (cl/rounding.clh): one each, the hectare 0.89-0.94 of the time
+)
+
+
+def kernel_generation(text):
+    if text not in KERNEL_GENERATIONS:
+        named = ", ".join(f'"{g}"' for g in KERNEL_GENERATIONS)
+        raise BadRow(f"'{text}' is not a generation of the light kernels named in runs_file.py's KERNEL_GENERATIONS "
+                     f"({named}; a new one is added there)")
+    return text
+
+
+def generations_in(runs):
+    """The kernel generations the runs ran, oldest first, and the runs of the latest of them ("today's kernels")."""
+    generations = [g for g in KERNEL_GENERATIONS if any(r["kernels"] == g for r in runs)]
+    return generations, [r for r in runs if generations and r["kernels"] == generations[-1]]
+
+
 def when_and_what(row):
     """The fields every runs file begins with, read: when the run started, on which machine and kind of processor, the
     commit, any variant, the kernel generation."""
@@ -111,7 +129,7 @@ def when_and_what(row):
         "cpu": field_of(row, "cpu", processor),
         "code": field_of(row, "code", commit),
         "variant": field_of(row, "variant", str),
-        "kernels": field_of(row, "kernels", not_empty),
+        "kernels": field_of(row, "kernels", kernel_generation),
     }
 
 
