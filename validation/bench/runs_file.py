@@ -116,7 +116,7 @@ def kernel_generation(text):
 def generations_in(runs):
     """The kernel generations the runs ran, oldest first, and the runs of the latest of them ("today's kernels")."""
     generations = [g for g in KERNEL_GENERATIONS if any(r["kernels"] == g for r in runs)]
-    return generations, [r for r in runs if generations and r["kernels"] == generations[-1]]
+    return generations, [r for r in runs if r["kernels"] == generations[-1]]
 
 
 def when_and_what(row):
