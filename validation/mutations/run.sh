@@ -20,7 +20,8 @@ tree=$work/tree
 export GIT_CEILING_DIRECTORIES=$work
 # ccache (when present) keeps its own settings: export CCACHE_BASEDIR=<a folder above both trees> to share objects
 # between the checkout's build and the copy's. The copy's test program is built without the precompiled header:
-# ccache does not cache a compile that uses one unless its settings allow it (docs/architecture.md).
+# ccache does not cache a compile that uses one unless its settings allow it (docs/architecture.md), so the test
+# program's objects are cached from one run of the harness to the next, not shared with a default build's.
 launcher=
 command -v ccache >/dev/null 2>&1 &&
   launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache -DHELIOSTAND_PRECOMPILED_HEADERS=OFF"
