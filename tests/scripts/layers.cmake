@@ -35,3 +35,9 @@ set_tests_properties(layers.models_link_alone PROPERTIES LABELS "unit" TIMEOUT 1
 add_test(NAME layers.models_include_no_toml_or_vtk
          COMMAND sh -c "! grep -rnE '#include <(toml|vtk)' '${PROJECT_SOURCE_DIR}/src/light' '${PROJECT_SOURCE_DIR}/src/architecture' '${PROJECT_SOURCE_DIR}/src/roots' '${PROJECT_SOURCE_DIR}/src/coupling' '${PROJECT_SOURCE_DIR}/src/hollow' '${PROJECT_SOURCE_DIR}/src/geometry' '${PROJECT_SOURCE_DIR}/src/rng' '${PROJECT_SOURCE_DIR}/src/compute' '${PROJECT_SOURCE_DIR}/src/core'")
 set_tests_properties(layers.models_include_no_toml_or_vtk PROPERTIES LABELS "unit" TIMEOUT 60)
+
+# What the test program's precompiled header stands for (tests/CMakeLists.txt): a test source without its own
+# #include <gtest/gtest.h>, which the precompiled header would supply unseen, fails here.
+add_test(NAME layers.test_sources_include_googletest
+         COMMAND sh -c "! grep -rL --include='*_test.cpp' '#include <gtest/gtest.h>' '${PROJECT_SOURCE_DIR}/tests' | grep .")
+set_tests_properties(layers.test_sources_include_googletest PROPERTIES LABELS "unit" TIMEOUT 60)
