@@ -70,7 +70,8 @@ def show_branches(source, view):
     """Every shoot (detail `full`) as a tube of its wood radius (Tube, Vary Radius: By Absolute Scalar), carrying
     only the arrays the view uses: `radius`, and `tree_id`, whose branches they are. Each shoot becomes a dozen tube
     cells (the example's half million shoots, six million), and copying the shoots' other ten cell arrays to every
-    one of them took 30 % of the tubes' time (docs/formats.md, "Rendering with ParaView")."""
+    one of them took 30 % of the tubes' time (docs/performance.md, "Both trees built by Ninja, and the branch
+    tubes' arrays")."""
     kept = PassArrays(Input=source)
     kept.PointDataArrays = ["radius"]
     kept.CellDataArrays = ["tree_id"]
